@@ -1,0 +1,219 @@
+//! Clipping and culling: whole-mesh rejection by bounding sphere,
+//! homogeneous clipping against the near and far planes, and guard-band
+//! clipping in window space for vertices the fixed-point setup cannot hold.
+//!
+//! Only the near and far planes are clipped in homogeneous space: `w` at or
+//! behind the eye never reaches the perspective divide, so nothing behind
+//! the camera is drawn mirrored. The screen edges need no clipping, since
+//! the rasterizer clamps spans to the strip; only vertices beyond the guard
+//! band ([`GUARD`](crate::raster::GUARD), millions of pixels away) are
+//! clipped, in `f64` window coordinates so the rounding is far below a
+//! pixel.
+
+use crate::math::{Mat4, Vec3, Vec4};
+use heapless::Vec;
+
+/// Most vertices a clipped triangle can have (3 + near + far + 4 guard planes).
+pub const MAX_CLIPPED: usize = 9;
+
+/// Where a bounding sphere lies relative to the view frustum.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SphereTest {
+    /// Entirely outside one plane: the mesh can be skipped.
+    Outside,
+    /// Entirely inside all planes.
+    Inside,
+    /// Crosses at least one plane.
+    Crossing,
+}
+
+/// Tests a world-space sphere against the frustum of a view-projection
+/// matrix (planes extracted from its rows). Non-finite input is `Outside`.
+pub fn sphere_in_frustum(view_proj: &Mat4, center: Vec3, radius: f32) -> SphereTest {
+    if !center.is_finite() || !radius.is_finite() || !view_proj.is_finite() {
+        return SphereTest::Outside;
+    }
+    let m = &view_proj.m;
+    let row = |r: usize| [m[r][0], m[r][1], m[r][2], m[r][3]];
+    let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+    let comb = |a: [f32; 4], b: [f32; 4], s: f32| [a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2], a[3] + s * b[3]];
+    // Inside means: -w <= x <= w, -w <= y <= w, 0 <= z <= w.
+    let planes = [comb(r3, r0, 1.0), comb(r3, r0, -1.0), comb(r3, r1, 1.0), comb(r3, r1, -1.0), r2, comb(r3, r2, -1.0)];
+    let mut result = SphereTest::Inside;
+    for p in planes {
+        let n = Vec3::new(p[0], p[1], p[2]);
+        let len = n.length();
+        if !(len > 0.0) {
+            continue;
+        }
+        let dist = (n.dot(center) + p[3]) / len;
+        if dist < -radius {
+            return SphereTest::Outside;
+        }
+        if dist < radius {
+            result = SphereTest::Crossing;
+        }
+    }
+    result
+}
+
+/// A vertex in clip space with its varyings.
+#[derive(Clone, Copy, Debug)]
+pub struct ClipVertex<const V: usize> {
+    /// Homogeneous clip-space position.
+    pub pos: Vec4,
+    /// Varyings.
+    pub attrs: [f32; V],
+    /// Index of the frame vertex this is a copy of, or [`NO_SOURCE`].
+    pub src: u16,
+}
+
+/// Marks a clipped vertex that is new (not a copy of an input vertex).
+pub const NO_SOURCE: u16 = u16::MAX;
+
+/// A vertex in window space (pixels, y down) before snapping.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WindowVertex<const V: usize> {
+    /// x in pixels.
+    pub x: f64,
+    /// y in pixels, down.
+    pub y: f64,
+    /// Depth in [0, 1].
+    pub z: f32,
+    /// `1 / w`.
+    pub q: f32,
+    /// Varyings.
+    pub attrs: [f32; V],
+    /// Index of the frame vertex this is a copy of, or [`NO_SOURCE`].
+    pub src: u16,
+}
+
+/// A convex polygon being clipped.
+pub type Polygon<T> = Vec<T, MAX_CLIPPED>;
+
+/// Sutherland–Hodgman against one plane: keeps the part where
+/// `dist(v) >= 0`, inserting `lerp(inside, outside, t)` where an edge
+/// crosses. The new vertex is always interpolated from the inside end, so
+/// two triangles sharing the edge compute the same bits (no crack). Never
+/// grows past [`MAX_CLIPPED`] (a convex polygon gains at most one vertex per
+/// plane, and callers clip against at most six planes).
+pub fn clip_polygon<T: Copy>(poly: &mut Polygon<T>, dist: impl Fn(&T) -> f64, lerp: impl Fn(&T, &T, f64) -> T) {
+    let input = core::mem::take(poly);
+    let n = input.len();
+    for i in 0..n {
+        let (a, b) = (&input[i], &input[(i + 1) % n]);
+        let (da, db) = (dist(a), dist(b));
+        if da >= 0.0 {
+            let _ = poly.push(*a);
+        }
+        if da >= 0.0 && db < 0.0 {
+            let _ = poly.push(lerp(a, b, da / (da - db)));
+        } else if da < 0.0 && db >= 0.0 {
+            let _ = poly.push(lerp(b, a, db / (db - da)));
+        }
+    }
+}
+
+/// Clips a clip-space triangle to `0 <= z <= w`.
+pub fn clip_near_far<const V: usize>(poly: &mut Polygon<ClipVertex<V>>) {
+    let lerp = |a: &ClipVertex<V>, b: &ClipVertex<V>, t: f64| {
+        let t = t as f32;
+        let mut attrs = a.attrs;
+        for (o, (x, y)) in attrs.iter_mut().zip(a.attrs.iter().zip(b.attrs.iter())) {
+            *o = x + (y - x) * t;
+        }
+        ClipVertex { pos: a.pos.lerp(b.pos, t), attrs, src: NO_SOURCE }
+    };
+    clip_polygon(poly, |v| v.pos.z as f64, lerp);
+    clip_polygon(poly, |v| (v.pos.w - v.pos.z) as f64, lerp);
+}
+
+/// Projects a clip-space vertex (with `w > 0`) to window coordinates of a
+/// `width` × `height` viewport.
+pub fn to_window<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32) -> WindowVertex<V> {
+    let q = 1.0 / v.pos.w;
+    WindowVertex {
+        x: ((v.pos.x * q + 1.0) * 0.5 * width) as f64,
+        y: ((1.0 - v.pos.y * q) * 0.5 * height) as f64,
+        z: v.pos.z * q,
+        q,
+        attrs: v.attrs,
+        src: v.src,
+    }
+}
+
+/// Clips a window-space polygon to the square `[-limit, limit]²` (pixels).
+/// Depth and `1/w` are linear in window space; varyings are interpolated
+/// as `value * q` when `perspective` is set, so the result is exact either way.
+pub fn clip_guard<const V: usize>(poly: &mut Polygon<WindowVertex<V>>, limit: f64, perspective: bool) {
+    let lerp = |a: &WindowVertex<V>, b: &WindowVertex<V>, t: f64| {
+        let tf = t as f32;
+        let q = a.q + (b.q - a.q) * tf;
+        let mut attrs = a.attrs;
+        for (o, (x, y)) in attrs.iter_mut().zip(a.attrs.iter().zip(b.attrs.iter())) {
+            *o = if perspective && q > 0.0 {
+                (x * a.q + (y * b.q - x * a.q) * tf) / q
+            } else {
+                x + (y - x) * tf
+            };
+        }
+        WindowVertex { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, z: a.z + (b.z - a.z) * tf, q, attrs, src: NO_SOURCE }
+    };
+    clip_polygon(poly, |v| v.x + limit, lerp);
+    clip_polygon(poly, |v| limit - v.x, lerp);
+    clip_polygon(poly, |v| v.y + limit, lerp);
+    clip_polygon(poly, |v| limit - v.y, lerp);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cv(x: f32, y: f32, z: f32, w: f32, a: f32) -> ClipVertex<1> {
+        ClipVertex { pos: Vec4::new(x, y, z, w), attrs: [a], src: NO_SOURCE }
+    }
+
+    #[test]
+    fn near_clip_splits_into_at_most_two_triangles() {
+        // One vertex behind: quad. Two behind: triangle.
+        let mut p: Polygon<_> = [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, 1.0, 2.0, 1.0), cv(0.0, 1.0, 1.0, 2.0, 1.0)].into_iter().collect();
+        clip_near_far(&mut p);
+        assert_eq!(p.len(), 4);
+        assert!(p.iter().all(|v| v.pos.z >= -1e-6 && v.pos.w > 0.0));
+        let mut p: Polygon<_> = [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, -1.0, 0.5, 0.0), cv(0.0, 1.0, 1.0, 2.0, 1.0)].into_iter().collect();
+        clip_near_far(&mut p);
+        assert_eq!(p.len(), 3);
+        // The attribute is interpolated at the crossing: z goes -1 -> 1, so t = 0.5.
+        assert!(p.iter().any(|v| (v.attrs[0] - 0.5).abs() < 1e-6));
+    }
+
+    #[test]
+    fn all_behind_clips_to_nothing() {
+        let mut p: Polygon<_> = [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, -2.0, 0.5, 0.0), cv(0.0, 1.0, -0.1, 0.5, 0.0)].into_iter().collect();
+        clip_near_far(&mut p);
+        assert!(p.is_empty());
+    }
+
+    #[test]
+    fn sphere_test_classifies() {
+        let vp = Mat4::perspective_fov_lh(1.0, 1.0, 0.1, 100.0);
+        assert_eq!(sphere_in_frustum(&vp, Vec3::new(0.0, 0.0, 10.0), 1.0), SphereTest::Inside);
+        assert_eq!(sphere_in_frustum(&vp, Vec3::new(0.0, 0.0, -10.0), 1.0), SphereTest::Outside);
+        assert_eq!(sphere_in_frustum(&vp, Vec3::new(0.0, 0.0, 0.0), 1.0), SphereTest::Crossing);
+        assert_eq!(sphere_in_frustum(&vp, Vec3::new(100.0, 0.0, 10.0), 1.0), SphereTest::Outside);
+        assert_eq!(sphere_in_frustum(&vp, Vec3::new(f32::NAN, 0.0, 10.0), 1.0), SphereTest::Outside);
+    }
+
+    #[test]
+    fn guard_clip_keeps_depth_and_perspective_exact() {
+        let w = |x: f64, q: f32, a: f32| WindowVertex { x, y: 0.0, z: 0.5, q, attrs: [a], src: NO_SOURCE };
+        let mut p: Polygon<_> = [w(-3000.0, 1.0, 0.0), w(1000.0, 0.25, 4.0), WindowVertex { y: 10.0, ..w(0.0, 1.0, 0.0) }].into_iter().collect();
+        clip_guard(&mut p, 2000.0, true);
+        assert!(p.iter().all(|v| v.x >= -2000.0 && v.x <= 2000.0));
+        // At x = -2000, t = 0.25 along the first edge: q = 0.8125 and the
+        // perspective-correct value is (0 + 0.25 * (4 * 0.25)) / 0.8125.
+        let v = p.iter().find(|v| v.x == -2000.0 && v.y == 0.0).unwrap();
+        assert!((v.q - 0.8125).abs() < 1e-6);
+        assert!((v.attrs[0] - 0.25 / 0.8125).abs() < 1e-6);
+    }
+}

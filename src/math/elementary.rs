@@ -1,0 +1,77 @@
+//! Elementary functions from the chosen backend.
+//!
+//! `libm` (feature `libm`, the default) is accurate to within an ulp or so;
+//! `micromath` (feature `micromath`, used only when `libm` is off) trades
+//! accuracy for speed. Both are plain Rust, so host and target compute the
+//! same bits for the same backend.
+
+#[cfg(not(any(feature = "libm", feature = "micromath")))]
+compile_error!("soft3d needs a math backend: enable the `libm` (default) or `micromath` feature");
+
+/// Square root. Negative inputs give NaN (callers clamp first).
+#[inline]
+pub fn sqrt(x: f32) -> f32 {
+    #[cfg(feature = "libm")]
+    {
+        libm::sqrtf(x)
+    }
+    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
+    {
+        micromath::F32Ext::sqrt(x)
+    }
+}
+
+/// Sine of an angle in radians.
+#[inline]
+pub fn sin(x: f32) -> f32 {
+    #[cfg(feature = "libm")]
+    {
+        libm::sinf(x)
+    }
+    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
+    {
+        micromath::F32Ext::sin(x)
+    }
+}
+
+/// Cosine of an angle in radians.
+#[inline]
+pub fn cos(x: f32) -> f32 {
+    #[cfg(feature = "libm")]
+    {
+        libm::cosf(x)
+    }
+    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
+    {
+        micromath::F32Ext::cos(x)
+    }
+}
+
+/// Tangent of an angle in radians.
+#[inline]
+pub fn tan(x: f32) -> f32 {
+    #[cfg(feature = "libm")]
+    {
+        libm::tanf(x)
+    }
+    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
+    {
+        micromath::F32Ext::tan(x)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn backend_is_close_to_std() {
+        for i in -50..50 {
+            let x = i as f32 * 0.173;
+            assert!((sin(x) - x.sin()).abs() < 2e-3, "sin({x})");
+            assert!((cos(x) - x.cos()).abs() < 2e-3, "cos({x})");
+            let s = x.abs();
+            assert!((sqrt(s) - s.sqrt()).abs() <= 1e-3 * s.sqrt().max(1.0), "sqrt({s})");
+        }
+    }
+}

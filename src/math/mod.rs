@@ -1,0 +1,22 @@
+//! Vectors, matrices and scalar types.
+//!
+//! Geometry (the vertex stage) works in `f32`. Attribute interpolation in the
+//! rasterizer is generic over [`Interp`], implemented by `f32` and by the
+//! fixed-point [`Fixed`].
+//!
+//! Matrices use the column-vector convention: a point is transformed as
+//! `M * p`, and `A * B` applies `B` first. Storage is row-major
+//! (`m[row][col]`). Coordinate systems are left-handed as in Babylon.js:
+//! x right, y up, z away from the viewer.
+
+mod elementary;
+mod fixed;
+mod interp;
+mod matrix;
+mod vector;
+
+pub use elementary::{cos, sin, sqrt, tan};
+pub use fixed::Fixed;
+pub use interp::Interp;
+pub use matrix::{Mat3, Mat4};
+pub use vector::{Vec2, Vec3, Vec4};

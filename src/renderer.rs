@@ -1,0 +1,535 @@
+//! The renderer: per-frame buffers, triangle assembly and binning, and the
+//! strip loop that rasterizes and hands each strip to the `DrawTarget`.
+//!
+//! A frame has two phases. While draw calls are made, meshes go through
+//! the vertex stage into a fixed-capacity vertex buffer, once per frame, and
+//! their visible triangles (culled, clipped) are queued as 16-byte records.
+//! [`Frame::finish`] then bins the records by first strip and, strip by
+//! strip, clears the strip's color and depth, rasterizes the triangles that
+//! overlap it in submission order, and sends it with one `fill_contiguous`.
+//!
+//! RAM (`size_of::<Renderer>()`, checked by a test):
+//!
+//! ```text
+//! W·STRIP·(size_of::<C>() + 2)            color and depth strips
+//! + VERTS·(16 + 4·V) + 8                  transformed vertices (+ length)
+//! + TRIS·16 + 8                           triangle records (+ length)
+//! + 2·H                                   per-strip list heads
+//! ```
+//! (rounded up to the alignment of 4). A [`Frame`] adds about 16 bytes per
+//! draw call slot ([`MAX_DRAW_CALLS`]) on the stack.
+
+use crate::clip::{self, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
+use crate::effect::{Effect, FaceInput, VertexInput};
+use crate::material::{Cull, DepthMode, Material, Perspective};
+use crate::math::{Mat4, Vec2, Vec3};
+use crate::mesh::Mesh;
+use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget, DEPTH_CLEAR, GUARD};
+use crate::scene::{Camera, Lights};
+use crate::settings::{FixedPoint, Settings};
+use crate::tri::TriVertex;
+use crate::vertex::{self, VertexStage};
+use core::marker::PhantomData;
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
+use embedded_graphics::prelude::{Point, Size};
+use embedded_graphics::primitives::Rectangle;
+use heapless::Vec;
+
+/// Most draw calls in one frame.
+pub const MAX_DRAW_CALLS: usize = 32;
+
+const NONE: u16 = u16::MAX;
+
+/// A queued triangle: indices into the frame's vertex buffer, its row
+/// range, the per-triangle color, and the link of its strip list.
+#[derive(Clone, Copy, Debug)]
+struct TriRecord {
+    v: [u16; 3],
+    next: u16,
+    first_row: u16,
+    end_row: u16,
+    face: u32,
+}
+
+/// Why a draw call was refused. The frame is left as it was before the
+/// call: nothing of the refused mesh is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawError {
+    /// The vertex buffer (`VERTS`) cannot hold this mesh's vertices.
+    VertexCapacity {
+        /// Vertices the frame would need.
+        needed: usize,
+        /// The buffer's capacity.
+        capacity: usize,
+    },
+    /// The triangle buffer (`TRIS`) filled up while queuing this mesh.
+    TriangleCapacity {
+        /// The buffer's capacity.
+        capacity: usize,
+    },
+    /// More than [`MAX_DRAW_CALLS`] draw calls in one frame.
+    DrawCallCapacity,
+}
+
+impl core::fmt::Display for DrawError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match *self {
+            DrawError::VertexCapacity { needed, capacity } => {
+                write!(f, "vertex buffer too small: frame needs {needed} vertices, capacity is {capacity}")
+            }
+            DrawError::TriangleCapacity { capacity } => {
+                write!(f, "triangle buffer full: capacity is {capacity} visible triangles")
+            }
+            DrawError::DrawCallCapacity => write!(f, "more than {MAX_DRAW_CALLS} draw calls in one frame"),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for DrawError {}
+
+/// What happened to the geometry of a frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameStats {
+    /// Draw calls accepted.
+    pub draw_calls: u32,
+    /// Meshes skipped whole: bounding sphere outside the frustum.
+    pub meshes_culled: u32,
+    /// Meshes skipped whole: non-finite model matrix.
+    pub meshes_invalid: u32,
+    /// Vertices transformed.
+    pub vertices: u32,
+    /// Triangles submitted.
+    pub triangles: u32,
+    /// Triangles dropped as back faces.
+    pub back_facing: u32,
+    /// Triangles with zero area after snapping.
+    pub degenerate: u32,
+    /// Triangles (or clipped pieces) entirely off screen, behind the near
+    /// plane or beyond the far plane.
+    pub off_screen: u32,
+    /// Triangles that needed clipping.
+    pub clipped: u32,
+    /// Triangles skipped for a non-finite vertex.
+    pub invalid: u32,
+    /// Triangle records queued for rasterization.
+    pub queued: u32,
+}
+
+/// The rasterization half of a material, erased so that one frame can mix
+/// materials. Implemented for every [`Material`]; each implementation is a
+/// separate monomorphized span loop.
+pub trait MaterialProgram<C, S: Settings, const V: usize> {
+    /// Rasterizes one triangle into a strip.
+    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C);
+}
+
+impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
+where
+    C: From<Rgb888> + Into<Rgb888> + Copy,
+    S: Settings,
+    E: Effect,
+    P: Perspective,
+    D: DepthMode,
+{
+    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C) {
+        raster::rasterize::<C, S::Interp, E, P, D, V>(target, tri, face, S::SUBPIXEL_BITS)
+    }
+}
+
+/// A strip renderer for a `W`×`H` display.
+///
+/// - `C`: the display's color type (e.g. `Rgb565`).
+/// - `STRIP`: rows rendered at a time; `STRIP == H` renders the full frame.
+/// - `VERTS`: transformed vertices per frame (sum of all drawn meshes'
+///   vertices, plus a few per clipped triangle).
+/// - `TRIS`: visible triangles per frame (after culling).
+/// - `V`: varyings stored per vertex (3 suffices for the color effects).
+/// - `S`: numeric [`Settings`].
+///
+/// See the [module docs](self) for the RAM formula. `new` is a `const fn`,
+/// so a renderer can be placed in a `static` rather than on the stack.
+pub struct Renderer<C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize = 3, S = FixedPoint> {
+    color: [[C; W]; STRIP],
+    depth: [[u16; W]; STRIP],
+    vertices: Vec<ScreenVertex<V>, VERTS>,
+    triangles: Vec<TriRecord, TRIS>,
+    heads: [u16; H],
+    _settings: PhantomData<S>,
+}
+
+impl<C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize, S>
+    Renderer<C, W, H, STRIP, VERTS, TRIS, V, S>
+where
+    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    S: Settings,
+{
+    const VALID: () = {
+        assert!(W > 0 && H > 0 && STRIP > 0 && STRIP <= H, "need 0 < STRIP <= H and a non-empty screen");
+        assert!(W <= 1 << 15 && H < 1 << 15, "screen too large");
+        assert!(VERTS <= NONE as usize && TRIS <= NONE as usize, "VERTS and TRIS must be below 65535");
+        assert!(S::SUBPIXEL_BITS <= 8, "at most 8 sub-pixel bits");
+    };
+
+    /// A renderer whose strips start filled with `fill`.
+    pub const fn new(fill: C) -> Self {
+        #[allow(clippy::let_unit_value)]
+        let () = Self::VALID;
+        Self {
+            color: [[fill; W]; STRIP],
+            depth: [[DEPTH_CLEAR; W]; STRIP],
+            vertices: Vec::new(),
+            triangles: Vec::new(),
+            heads: [NONE; H],
+            _settings: PhantomData,
+        }
+    }
+
+    /// Starts a frame seen from `camera`, lit by `lights`, on a
+    /// `background` color.
+    pub fn begin_frame<'r, 'm>(&'r mut self, camera: &Camera, lights: &Lights, background: C) -> Frame<'r, 'm, C, W, H, STRIP, VERTS, TRIS, V, S> {
+        let view_proj = camera.projection(W as f32 / H as f32) * camera.view();
+        self.begin_frame_with(view_proj, lights, background)
+    }
+
+    /// Starts a frame with an explicit view-projection matrix (clip space
+    /// as [`Mat4::perspective_fov_lh`] produces: `0 <= z <= w` visible).
+    pub fn begin_frame_with<'r, 'm>(&'r mut self, view_proj: Mat4, lights: &Lights, background: C) -> Frame<'r, 'm, C, W, H, STRIP, VERTS, TRIS, V, S> {
+        self.vertices.clear();
+        self.triangles.clear();
+        Frame { r: self, draws: Vec::new(), view_proj, lights: *lights, background, stats: FrameStats::default() }
+    }
+}
+
+/// A frame being recorded. Draw calls queue geometry; [`Frame::finish`]
+/// rasterizes and outputs it. Materials are borrowed until then (`'m`).
+pub struct Frame<'r, 'm, C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize, S: Settings> {
+    r: &'r mut Renderer<C, W, H, STRIP, VERTS, TRIS, V, S>,
+    draws: Vec<(&'m dyn MaterialProgram<C, S, V>, u16), MAX_DRAW_CALLS>,
+    view_proj: Mat4,
+    lights: Lights,
+    background: C,
+    stats: FrameStats,
+}
+
+/// A triangle in flight through assembly: its vertices' buffer indices.
+type Corners = [u16; 3];
+
+impl<'m, C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize, S>
+    Frame<'_, 'm, C, W, H, STRIP, VERTS, TRIS, V, S>
+where
+    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    S: Settings,
+{
+    /// Statistics so far.
+    pub fn stats(&self) -> FrameStats {
+        self.stats
+    }
+
+    /// Draws `mesh` placed by `model` with `material`.
+    ///
+    /// Errors leave the frame as it was; geometry that cannot be drawn
+    /// (non-finite, off screen, back-facing) is skipped and counted in
+    /// [`FrameStats`].
+    pub fn draw<E, P, D>(&mut self, mesh: &Mesh<'_>, model: &Mat4, material: &'m Material<E, P, D>) -> Result<(), DrawError>
+    where
+        E: Effect,
+        P: Perspective,
+        D: DepthMode,
+    {
+        const { assert!(E::VARYINGS <= V, "the renderer stores fewer varyings (V) than this effect needs") };
+        if !model.is_finite() {
+            self.stats.meshes_invalid += 1;
+            return Ok(());
+        }
+        let b = mesh.bounds();
+        let center = model.transform_point3(b.center);
+        if clip::sphere_in_frustum(&self.view_proj, center, b.radius * model.max_scale()) == SphereTest::Outside {
+            self.stats.meshes_culled += 1;
+            return Ok(());
+        }
+        let base = self.r.vertices.len();
+        if mesh.vertex_count() > VERTS - base {
+            return Err(DrawError::VertexCapacity { needed: base + mesh.vertex_count(), capacity: VERTS });
+        }
+        self.begin_draw(material)?;
+        let lights = self.lights;
+        let stage = VertexStage {
+            model: *model,
+            view_proj: self.view_proj,
+            mvp: self.view_proj * *model,
+            normal_matrix: model.normal_matrix(),
+            lights: &lights,
+            effect: &material.effect,
+            color: material.color,
+            width: W as f32,
+            height: H as f32,
+            subpixel_bits: S::SUBPIXEL_BITS,
+        };
+        for i in 0..mesh.vertex_count() {
+            // Capacity was checked above.
+            let _ = self.r.vertices.push(stage.vertex(mesh, i));
+        }
+        let snapshot = self.stats;
+        let (p, idx) = (mesh.positions(), mesh.indices());
+        for t in idx.chunks_exact(3) {
+            let local = [t[0] as usize, t[1] as usize, t[2] as usize];
+            let corners = [(base + local[0]) as u16, (base + local[1]) as u16, (base + local[2]) as u16];
+            let face = if E::USES_FACE {
+                // Geometric normal in model space, to world by the normal matrix.
+                let (a, b, c) = (p[local[0]], p[local[1]], p[local[2]]);
+                let normal = stage.normal_matrix.transform((b - a).cross(c - a)).normalize_or_zero();
+                let position = model.transform_point3((a + b + c) * (1.0 / 3.0));
+                let color = mesh.colors().map_or(material.color, |cs| cs[local[0]]);
+                material.effect.face(&FaceInput { position, normal, color }, &lights)
+            } else {
+                Rgb888::BLACK
+            };
+            let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
+                let i = local[vi];
+                ClipVertex { pos: stage.clip_position(p[i]), attrs: stage.varyings(mesh, i), src: corners[vi] }
+            });
+            if let Err(e) = res {
+                self.rollback(base, snapshot);
+                return Err(e);
+            }
+        }
+        self.stats.vertices += mesh.vertex_count() as u32;
+        Ok(())
+    }
+
+    /// Draws triangles given in window coordinates (pixels, y down; the
+    /// `.tri` format), entering the pipeline at triangle assembly: the same
+    /// culling, guard-band clipping, setup and span loops as meshes. The
+    /// colors go through the material's effect unlit; flat effects use the
+    /// first vertex's color.
+    pub fn draw_window_triangles<E, P, D, I>(&mut self, triangles: I, material: &'m Material<E, P, D>) -> Result<(), DrawError>
+    where
+        E: Effect,
+        P: Perspective,
+        D: DepthMode,
+        I: IntoIterator<Item = [TriVertex; 3]>,
+    {
+        const { assert!(E::VARYINGS <= V, "the renderer stores fewer varyings (V) than this effect needs") };
+        let base = self.r.vertices.len();
+        let snapshot = self.stats;
+        self.begin_draw(material)?;
+        let lights = Lights::UNLIT;
+        for tri in triangles {
+            let attrs = |v: &TriVertex| -> [f32; V] {
+                let input = VertexInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: v.color, uv: Vec2::new(0.0, 0.0) };
+                let all = material.effect.vertex(&input, &lights);
+                let mut out = [0.0; V];
+                let n = V.min(all.len());
+                out[..n].copy_from_slice(&all[..n]);
+                out
+            };
+            let face = if E::USES_FACE {
+                material.effect.face(&FaceInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: tri[0].color }, &lights)
+            } else {
+                Rgb888::BLACK
+            };
+            let mut poly: Polygon<WindowVertex<V>> = Polygon::new();
+            let mut valid = true;
+            for v in &tri {
+                valid &= v.x.is_finite() && v.y.is_finite() && v.z.is_finite() && v.w.is_finite() && v.w > 0.0;
+                let _ = poly.push(WindowVertex { x: v.x, y: v.y, z: v.z, q: 1.0 / v.w, attrs: attrs(v), src: NO_SOURCE });
+            }
+            self.stats.triangles += 1;
+            if !valid {
+                self.stats.invalid += 1;
+                continue;
+            }
+            if let Err(e) = self.emit_polygon(poly, face, material.cull, P::CORRECT) {
+                self.rollback(base, snapshot);
+                return Err(e);
+            }
+        }
+        Ok(())
+    }
+
+    fn begin_draw(&mut self, program: &'m dyn MaterialProgram<C, S, V>) -> Result<(), DrawError> {
+        let first = self.r.triangles.len() as u16;
+        self.draws.push((program, first)).map_err(|_| DrawError::DrawCallCapacity)?;
+        self.stats.draw_calls += 1;
+        Ok(())
+    }
+
+    fn rollback(&mut self, vertices: usize, stats: FrameStats) {
+        self.r.vertices.truncate(vertices);
+        if let Some((_, first)) = self.draws.pop() {
+            self.r.triangles.truncate(first as usize);
+        }
+        self.stats = stats;
+        self.stats.draw_calls -= 1;
+    }
+
+    /// Assembles one mesh triangle whose corners are already in the vertex
+    /// buffer: the common case goes straight to culling and queuing; a
+    /// triangle with a vertex behind the near plane, beyond the far plane
+    /// or outside the guard band is clipped (`clip_vertex` recomputes a
+    /// corner in clip space).
+    fn assemble(&mut self, corners: Corners, face: Rgb888, cull: Cull, perspective: bool, clip_vertex: impl Fn(usize) -> ClipVertex<V>) -> Result<(), DrawError> {
+        self.stats.triangles += 1;
+        let vs = &self.r.vertices;
+        let fl = [vertex::flags(&vs[corners[0] as usize]), vertex::flags(&vs[corners[1] as usize]), vertex::flags(&vs[corners[2] as usize])];
+        if fl == [0, 0, 0] {
+            return self.emit(corners, face, cull);
+        }
+        if fl.iter().any(|f| f & vertex::NOT_FINITE != 0) {
+            self.stats.invalid += 1;
+            return Ok(());
+        }
+        if fl[0] & fl[1] & fl[2] & (vertex::BEHIND_NEAR | vertex::BEYOND_FAR) != 0 {
+            self.stats.off_screen += 1;
+            return Ok(());
+        }
+        self.stats.clipped += 1;
+        let mut poly: Polygon<ClipVertex<V>> = (0..3).map(&clip_vertex).collect();
+        clip::clip_near_far(&mut poly);
+        let window: Polygon<WindowVertex<V>> = poly.iter().map(|v| clip::to_window(v, W as f32, H as f32)).collect();
+        if window.len() < 3 {
+            self.stats.off_screen += 1;
+            return Ok(());
+        }
+        self.emit_polygon(window, face, cull, perspective)
+    }
+
+    /// Snaps a convex window-space polygon (clipping it to the guard band
+    /// if needed), stores its new vertices and queues it as a fan.
+    fn emit_polygon(&mut self, mut poly: Polygon<WindowVertex<V>>, face: Rgb888, cull: Cull, perspective: bool) -> Result<(), DrawError> {
+        let bits = S::SUBPIXEL_BITS;
+        let fits = |v: &WindowVertex<V>| snap_f64(v.x, bits).is_some() && snap_f64(v.y, bits).is_some();
+        if !poly.iter().all(fits) {
+            // Stay a pixel inside the guard so snapping cannot push past it.
+            let limit = ((GUARD >> (bits + 1)) - 1) as f64;
+            clip::clip_guard(&mut poly, limit, perspective);
+        }
+        let mut idx: Vec<u16, { clip::MAX_CLIPPED }> = Vec::new();
+        for v in &poly {
+            if v.src != NO_SOURCE {
+                let _ = idx.push(v.src);
+                continue;
+            }
+            let (Some(x), Some(y)) = (snap_f64(v.x, bits), snap_f64(v.y, bits)) else {
+                self.stats.invalid += 1;
+                return Ok(());
+            };
+            let i = self.r.vertices.len();
+            self.r
+                .vertices
+                .push(ScreenVertex { x, y, z: v.z, q: v.q, attrs: v.attrs })
+                .map_err(|_| DrawError::VertexCapacity { needed: i + 1, capacity: VERTS })?;
+            let _ = idx.push(i as u16);
+        }
+        for k in 1..idx.len().saturating_sub(1) {
+            self.emit([idx[0], idx[k], idx[k + 1]], face, cull)?;
+        }
+        Ok(())
+    }
+
+    /// Culls a snapped triangle (degenerate, back-facing, off screen) or
+    /// queues it.
+    fn emit(&mut self, corners: Corners, face: Rgb888, cull: Cull) -> Result<(), DrawError> {
+        let vs = &self.r.vertices;
+        let [a, b, c] = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];
+        let area = signed_area2(a, b, c);
+        if area == 0 {
+            self.stats.degenerate += 1;
+            return Ok(());
+        }
+        if cull == Cull::Back && area < 0 {
+            self.stats.back_facing += 1;
+            return Ok(());
+        }
+        let bits = S::SUBPIXEL_BITS;
+        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).clamp(0, H as i32);
+        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).clamp(0, H as i32);
+        // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
+        let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
+        let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
+        if first >= end || right <= 0 || left >= W as i32 {
+            self.stats.off_screen += 1;
+            return Ok(());
+        }
+        let rec = TriRecord { v: corners, next: NONE, first_row: first as u16, end_row: end as u16, face: pack(face) };
+        self.r.triangles.push(rec).map_err(|_| DrawError::TriangleCapacity { capacity: TRIS })?;
+        self.stats.queued += 1;
+        Ok(())
+    }
+
+    /// Rasterizes the frame strip by strip into `target`.
+    pub fn finish<T: DrawTarget<Color = C>>(self, target: &mut T) -> Result<FrameStats, T::Error> {
+        let Frame { r, draws, background, stats, .. } = self;
+        let strips = H.div_ceil(STRIP);
+        // Bin by first strip; pushing in reverse keeps each list in
+        // submission order.
+        r.heads[..strips].fill(NONE);
+        for i in (0..r.triangles.len()).rev() {
+            let s = r.triangles[i].first_row as usize / STRIP;
+            r.triangles[i].next = r.heads[s];
+            r.heads[s] = i as u16;
+        }
+        // Triangles that continue into the next strip, in submission order.
+        let mut carried = NONE;
+        for s in 0..strips {
+            let y0 = s * STRIP;
+            let rows = STRIP.min(H - y0);
+            for row in r.color.iter_mut().take(rows) {
+                row.fill(background);
+            }
+            for row in r.depth.iter_mut().take(rows) {
+                row.fill(DEPTH_CLEAR);
+            }
+            let mut strip = StripTarget {
+                color: r.color[..rows].as_flattened_mut(),
+                depth: r.depth[..rows].as_flattened_mut(),
+                width: W,
+                y0: y0 as i32,
+                rows: rows as i32,
+            };
+            let (mut fresh, mut old) = (r.heads[s], carried);
+            let (mut next_head, mut next_tail) = (NONE, NONE);
+            let mut draw = 0;
+            // Merge the two lists by index, i.e. in submission order.
+            while fresh != NONE || old != NONE {
+                let take_fresh = old == NONE || (fresh != NONE && fresh < old);
+                let i = if take_fresh { fresh } else { old };
+                let rec = r.triangles[i as usize];
+                if take_fresh {
+                    fresh = rec.next;
+                } else {
+                    old = rec.next;
+                }
+                while draw + 1 < draws.len() && draws[draw + 1].1 <= i {
+                    draw += 1;
+                }
+                let vs = &r.vertices;
+                let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
+                draws[draw].0.rasterize(&mut strip, tri, C::from(unpack(rec.face)));
+                if rec.end_row as usize > y0 + rows {
+                    r.triangles[i as usize].next = NONE;
+                    if next_tail == NONE {
+                        next_head = i;
+                    } else {
+                        r.triangles[next_tail as usize].next = i;
+                    }
+                    next_tail = i;
+                }
+            }
+            carried = next_head;
+            let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(W as u32, rows as u32));
+            target.fill_contiguous(&area, strip.color.iter().copied())?;
+        }
+        Ok(stats)
+    }
+}
+
+fn pack(c: Rgb888) -> u32 {
+    (c.r() as u32) << 16 | (c.g() as u32) << 8 | c.b() as u32
+}
+
+fn unpack(v: u32) -> Rgb888 {
+    Rgb888::new((v >> 16) as u8, (v >> 8) as u8, v as u8)
+}

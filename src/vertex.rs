@@ -1,0 +1,132 @@
+//! The vertex stage: model, view and projection to clip space, normals
+//! through the normal matrix, per-vertex effect work (lighting), and the
+//! projection of visible vertices to snapped window coordinates.
+
+use crate::clip::{to_window, ClipVertex};
+use crate::effect::{Effect, VertexInput};
+use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
+use crate::mesh::Mesh;
+use crate::raster::{snap, ScreenVertex};
+use crate::scene::Lights;
+use embedded_graphics::pixelcolor::Rgb888;
+
+/// Vertex outside the near plane (in front of it is inside).
+pub const BEHIND_NEAR: i32 = 1;
+/// Vertex beyond the far plane.
+pub const BEYOND_FAR: i32 = 2;
+/// Vertex outside the guard band of the fixed-point setup.
+pub const OUTSIDE_GUARD: i32 = 4;
+/// Vertex with a non-finite position.
+pub const NOT_FINITE: i32 = 8;
+/// `x` of a vertex that has no window position; its `y` holds the flags
+/// above. (Keeps the flags without growing every stored vertex.)
+pub const UNPROJECTED: i32 = i32::MIN;
+
+/// The flags of a stored vertex (0 if it has a window position).
+#[inline]
+pub fn flags<const V: usize>(v: &ScreenVertex<V>) -> i32 {
+    if v.x == UNPROJECTED {
+        v.y
+    } else {
+        0
+    }
+}
+
+/// Everything the vertex stage needs for one draw call.
+pub struct VertexStage<'a, E> {
+    /// Model matrix.
+    pub model: Mat4,
+    /// View-projection matrix.
+    pub view_proj: Mat4,
+    /// Model-view-projection matrix.
+    pub mvp: Mat4,
+    /// Normal matrix of the model.
+    pub normal_matrix: Mat3,
+    /// Lights of the frame.
+    pub lights: &'a Lights,
+    /// Effect of the material.
+    pub effect: &'a E,
+    /// Material color, for meshes without vertex colors.
+    pub color: Rgb888,
+    /// Viewport size in pixels.
+    pub width: f32,
+    /// Viewport height in pixels.
+    pub height: f32,
+    /// Sub-pixel bits.
+    pub subpixel_bits: u32,
+}
+
+impl<E: Effect> VertexStage<'_, E> {
+    /// Clip-space position of a model-space point. The single definition
+    /// used both here and when a triangle is clipped, so a clipped triangle
+    /// keeps exactly the vertices its unclipped neighbors use.
+    #[inline]
+    pub fn clip_position(&self, p: Vec3) -> Vec4 {
+        if E::LIT_VERTICES {
+            self.view_proj.transform_point(self.model.transform_point3(p))
+        } else {
+            self.mvp.transform_point(p)
+        }
+    }
+
+    /// Varyings of mesh vertex `i`.
+    #[inline]
+    pub fn varyings<const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
+        let mut out = [0.0; V];
+        if E::VARYINGS == 0 {
+            return out;
+        }
+        let p = mesh.positions()[i];
+        let (position, normal) = if E::LIT_VERTICES {
+            let n = mesh.normals()[i];
+            (self.model.transform_point3(p), self.normal_matrix.transform(n).normalize_or_zero())
+        } else {
+            (Vec3::ZERO, Vec3::ZERO)
+        };
+        let input = VertexInput {
+            position,
+            normal,
+            color: mesh.colors().map_or(self.color, |c| c[i]),
+            uv: mesh.uvs().map_or(Vec2::new(0.0, 0.0), |u| u[i]),
+        };
+        let v = self.effect.vertex(&input, self.lights);
+        let n = V.min(v.len());
+        out[..n].copy_from_slice(&v[..n]);
+        out
+    }
+
+    /// Transforms mesh vertex `i` into a stored vertex: projected and
+    /// snapped if it is inside the near/far planes and the guard band,
+    /// otherwise flagged.
+    #[inline]
+    pub fn vertex<const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
+        let clip = self.clip_position(mesh.positions()[i]);
+        let attrs = self.varyings(mesh, i);
+        project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
+    }
+}
+
+/// Projects and snaps a clip-space vertex, or flags why it cannot be.
+#[inline]
+pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
+    let c = v.pos;
+    let mut flags = 0;
+    if !c.is_finite() {
+        flags |= NOT_FINITE;
+    } else {
+        if c.z < 0.0 {
+            flags |= BEHIND_NEAR;
+        }
+        if c.z > c.w {
+            flags |= BEYOND_FAR;
+        }
+    }
+    if flags == 0 {
+        let w = to_window(v, width, height);
+        if let (Some(x), Some(y)) = (snap(w.x as f32, subpixel_bits), snap(w.y as f32, subpixel_bits)) {
+            return ScreenVertex { x, y, z: w.z, q: w.q, attrs: v.attrs };
+        }
+        flags |= OUTSIDE_GUARD;
+    }
+    ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
+}
