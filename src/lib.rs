@@ -46,17 +46,22 @@ extern crate std;
 
 pub mod clip;
 pub mod effect;
+#[cfg(feature = "simulator")]
+pub mod host;
 pub mod material;
 pub mod math;
 pub mod mesh;
 pub mod raster;
 pub mod renderer;
 pub mod scene;
+pub mod scenes;
 pub mod settings;
 pub mod tri;
 pub mod vertex;
 
 pub use material::{Cull, Material};
 pub use renderer::{DrawError, Frame, FrameStats, Renderer};
+#[cfg(feature = "std")]
+pub use renderer::{HostRenderer, SizeError};
 pub use scene::{Camera, DirectionalLight, Lights, PointLight};
 pub use settings::{FixedPoint, FloatingPoint, Precision, Settings};

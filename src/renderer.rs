@@ -11,13 +11,13 @@
 //! RAM (`size_of::<Renderer>()`, checked by a test):
 //!
 //! ```text
-//! W·STRIP·(size_of::<C>() + 2)            color and depth strips
-//! + VERTS·(16 + 4·V) + 8                  transformed vertices (+ length)
-//! + TRIS·16 + 8                           triangle records (+ length)
-//! + 2·H                                   per-strip list heads
+//! W·STRIP·(size_of::<C>() + 2)     color and depth strips
+//! + VERTS·(16 + 4·V)               transformed vertices
+//! + TRIS·16                        queued triangles
+//! + 2·H                            per-strip list heads
 //! ```
-//! (rounded up to the alignment of 4). A [`Frame`] adds about 16 bytes per
-//! draw call slot ([`MAX_DRAW_CALLS`]) on the stack.
+//! rounded up to a multiple of 4. A [`Frame`] adds about 12 bytes per
+//! draw-call slot ([`MAX_DRAW_CALLS`]) on the stack while it is recorded.
 
 use crate::clip::{self, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
 use crate::effect::{Effect, FaceInput, VertexInput};
@@ -50,6 +50,10 @@ struct TriRecord {
     first_row: u16,
     end_row: u16,
     face: u32,
+}
+
+impl TriRecord {
+    const EMPTY: Self = Self { v: [0; 3], next: NONE, first_row: 0, end_row: 0, face: 0 };
 }
 
 /// Why a draw call was refused. The frame is left as it was before the
@@ -138,7 +142,7 @@ where
     }
 }
 
-/// A strip renderer for a `W`×`H` display.
+/// A strip renderer for a `W`×`H` display, with all buffers inline.
 ///
 /// - `C`: the display's color type (e.g. `Rgb565`).
 /// - `STRIP`: rows rendered at a time; `STRIP == H` renders the full frame.
@@ -153,8 +157,8 @@ where
 pub struct Renderer<C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize = 3, S = FixedPoint> {
     color: [[C; W]; STRIP],
     depth: [[u16; W]; STRIP],
-    vertices: Vec<ScreenVertex<V>, VERTS>,
-    triangles: Vec<TriRecord, TRIS>,
+    vertices: [ScreenVertex<V>; VERTS],
+    triangles: [TriRecord; TRIS],
     heads: [u16; H],
     _settings: PhantomData<S>,
 }
@@ -167,8 +171,8 @@ where
 {
     const VALID: () = {
         assert!(W > 0 && H > 0 && STRIP > 0 && STRIP <= H, "need 0 < STRIP <= H and a non-empty screen");
-        assert!(W <= 1 << 15 && H < 1 << 15, "screen too large");
-        assert!(VERTS <= NONE as usize && TRIS <= NONE as usize, "VERTS and TRIS must be below 65535");
+        assert!(W <= MAX_SIZE && H <= MAX_SIZE, "screen too large");
+        assert!(VERTS < NONE as usize && TRIS < NONE as usize, "VERTS and TRIS must be below 65535");
         assert!(S::SUBPIXEL_BITS <= 8, "at most 8 sub-pixel bits");
     };
 
@@ -179,8 +183,8 @@ where
         Self {
             color: [[fill; W]; STRIP],
             depth: [[DEPTH_CLEAR; W]; STRIP],
-            vertices: Vec::new(),
-            triangles: Vec::new(),
+            vertices: [ScreenVertex::ZERO; VERTS],
+            triangles: [TriRecord::EMPTY; TRIS],
             heads: [NONE; H],
             _settings: PhantomData,
         }
@@ -188,24 +192,132 @@ where
 
     /// Starts a frame seen from `camera`, lit by `lights`, on a
     /// `background` color.
-    pub fn begin_frame<'r, 'm>(&'r mut self, camera: &Camera, lights: &Lights, background: C) -> Frame<'r, 'm, C, W, H, STRIP, VERTS, TRIS, V, S> {
+    pub fn begin_frame<'r, 'm>(&'r mut self, camera: &Camera, lights: &Lights, background: C) -> Frame<'r, 'm, C, V, S> {
         let view_proj = camera.projection(W as f32 / H as f32) * camera.view();
         self.begin_frame_with(view_proj, lights, background)
     }
 
     /// Starts a frame with an explicit view-projection matrix (clip space
     /// as [`Mat4::perspective_fov_lh`] produces: `0 <= z <= w` visible).
-    pub fn begin_frame_with<'r, 'm>(&'r mut self, view_proj: Mat4, lights: &Lights, background: C) -> Frame<'r, 'm, C, W, H, STRIP, VERTS, TRIS, V, S> {
-        self.vertices.clear();
-        self.triangles.clear();
-        Frame { r: self, draws: Vec::new(), view_proj, lights: *lights, background, stats: FrameStats::default() }
+    pub fn begin_frame_with<'r, 'm>(&'r mut self, view_proj: Mat4, lights: &Lights, background: C) -> Frame<'r, 'm, C, V, S> {
+        let buffers = Buffers {
+            color: self.color.as_flattened_mut(),
+            depth: self.depth.as_flattened_mut(),
+            vertices: &mut self.vertices,
+            triangles: &mut self.triangles,
+            heads: &mut self.heads,
+            width: W,
+            height: H,
+            strip: STRIP,
+        };
+        Frame::new(buffers, view_proj, lights, background)
     }
+}
+
+/// Largest width or height a renderer accepts.
+pub const MAX_SIZE: usize = 1 << 14;
+
+/// Why a [`HostRenderer`] cannot be built.
+#[cfg(feature = "std")]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SizeError;
+
+#[cfg(feature = "std")]
+impl core::fmt::Display for SizeError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "need 1 <= width, height <= {MAX_SIZE}, 1 <= strip <= height, and capacities below 65535")
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for SizeError {}
+
+/// [`Renderer`] with sizes chosen at run time and buffers on the heap, for
+/// host tools (feature `std`). Renders the same pixels as [`Renderer`].
+#[cfg(feature = "std")]
+pub struct HostRenderer<C, const V: usize = 3, S = FixedPoint> {
+    color: std::vec::Vec<C>,
+    depth: std::vec::Vec<u16>,
+    vertices: std::vec::Vec<ScreenVertex<V>>,
+    triangles: std::vec::Vec<TriRecord>,
+    heads: std::vec::Vec<u16>,
+    width: usize,
+    height: usize,
+    strip: usize,
+    _settings: PhantomData<S>,
+}
+
+#[cfg(feature = "std")]
+impl<C, const V: usize, S> HostRenderer<C, V, S>
+where
+    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    S: Settings,
+{
+    /// A `width`×`height` renderer with `strip` rows per strip and room for
+    /// `vertices` transformed vertices and `triangles` queued triangles.
+    pub fn new(width: usize, height: usize, strip: usize, vertices: usize, triangles: usize, fill: C) -> Result<Self, SizeError> {
+        let ok = (1..=MAX_SIZE).contains(&width)
+            && (1..=MAX_SIZE).contains(&height)
+            && (1..=height).contains(&strip)
+            && vertices < NONE as usize
+            && triangles < NONE as usize
+            && S::SUBPIXEL_BITS <= 8;
+        if !ok {
+            return Err(SizeError);
+        }
+        Ok(Self {
+            color: std::vec![fill; width * strip],
+            depth: std::vec![DEPTH_CLEAR; width * strip],
+            vertices: std::vec![ScreenVertex::ZERO; vertices],
+            triangles: std::vec![TriRecord::EMPTY; triangles],
+            heads: std::vec![NONE; height],
+            width,
+            height,
+            strip,
+            _settings: PhantomData,
+        })
+    }
+
+    /// Starts a frame seen from `camera`.
+    pub fn begin_frame<'r, 'm>(&'r mut self, camera: &Camera, lights: &Lights, background: C) -> Frame<'r, 'm, C, V, S> {
+        let view_proj = camera.projection(self.width as f32 / self.height as f32) * camera.view();
+        self.begin_frame_with(view_proj, lights, background)
+    }
+
+    /// Starts a frame with an explicit view-projection matrix.
+    pub fn begin_frame_with<'r, 'm>(&'r mut self, view_proj: Mat4, lights: &Lights, background: C) -> Frame<'r, 'm, C, V, S> {
+        let buffers = Buffers {
+            color: &mut self.color,
+            depth: &mut self.depth,
+            vertices: &mut self.vertices,
+            triangles: &mut self.triangles,
+            heads: &mut self.heads,
+            width: self.width,
+            height: self.height,
+            strip: self.strip,
+        };
+        Frame::new(buffers, view_proj, lights, background)
+    }
+}
+
+/// The memory a frame works in, borrowed from a renderer.
+struct Buffers<'a, C, const V: usize> {
+    color: &'a mut [C],
+    depth: &'a mut [u16],
+    vertices: &'a mut [ScreenVertex<V>],
+    triangles: &'a mut [TriRecord],
+    heads: &'a mut [u16],
+    width: usize,
+    height: usize,
+    strip: usize,
 }
 
 /// A frame being recorded. Draw calls queue geometry; [`Frame::finish`]
 /// rasterizes and outputs it. Materials are borrowed until then (`'m`).
-pub struct Frame<'r, 'm, C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize, S: Settings> {
-    r: &'r mut Renderer<C, W, H, STRIP, VERTS, TRIS, V, S>,
+pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
+    b: Buffers<'r, C, V>,
+    n_vertices: usize,
+    n_triangles: usize,
     draws: Vec<(&'m dyn MaterialProgram<C, S, V>, u16), MAX_DRAW_CALLS>,
     view_proj: Mat4,
     lights: Lights,
@@ -216,12 +328,25 @@ pub struct Frame<'r, 'm, C, const W: usize, const H: usize, const STRIP: usize, 
 /// A triangle in flight through assembly: its vertices' buffer indices.
 type Corners = [u16; 3];
 
-impl<'m, C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize, S>
-    Frame<'_, 'm, C, W, H, STRIP, VERTS, TRIS, V, S>
+impl<'r, 'm, C, const V: usize, S> Frame<'r, 'm, C, V, S>
 where
     C: PixelColor + From<Rgb888> + Into<Rgb888>,
     S: Settings,
 {
+    fn new(b: Buffers<'r, C, V>, view_proj: Mat4, lights: &Lights, background: C) -> Self {
+        Self { b, n_vertices: 0, n_triangles: 0, draws: Vec::new(), view_proj, lights: *lights, background, stats: FrameStats::default() }
+    }
+
+    /// Appends a vertex, or reports the buffer full.
+    fn push_vertex(&mut self, v: ScreenVertex<V>) -> Result<u16, DrawError> {
+        let i = self.n_vertices;
+        let capacity = self.b.vertices.len();
+        let slot = self.b.vertices.get_mut(i).ok_or(DrawError::VertexCapacity { needed: i + 1, capacity })?;
+        *slot = v;
+        self.n_vertices += 1;
+        Ok(i as u16)
+    }
+
     /// Statistics so far.
     pub fn stats(&self) -> FrameStats {
         self.stats
@@ -249,9 +374,10 @@ where
             self.stats.meshes_culled += 1;
             return Ok(());
         }
-        let base = self.r.vertices.len();
-        if mesh.vertex_count() > VERTS - base {
-            return Err(DrawError::VertexCapacity { needed: base + mesh.vertex_count(), capacity: VERTS });
+        let base = self.n_vertices;
+        let capacity = self.b.vertices.len();
+        if mesh.vertex_count() > capacity - base {
+            return Err(DrawError::VertexCapacity { needed: base + mesh.vertex_count(), capacity });
         }
         self.begin_draw(material)?;
         let lights = self.lights;
@@ -263,14 +389,14 @@ where
             lights: &lights,
             effect: &material.effect,
             color: material.color,
-            width: W as f32,
-            height: H as f32,
+            width: self.b.width as f32,
+            height: self.b.height as f32,
             subpixel_bits: S::SUBPIXEL_BITS,
         };
-        for i in 0..mesh.vertex_count() {
-            // Capacity was checked above.
-            let _ = self.r.vertices.push(stage.vertex(mesh, i));
+        for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
+            *slot = stage.vertex(mesh, i);
         }
+        self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
         let (p, idx) = (mesh.positions(), mesh.indices());
         for t in idx.chunks_exact(3) {
@@ -312,7 +438,7 @@ where
         I: IntoIterator<Item = [TriVertex; 3]>,
     {
         const { assert!(E::VARYINGS <= V, "the renderer stores fewer varyings (V) than this effect needs") };
-        let base = self.r.vertices.len();
+        let base = self.n_vertices;
         let snapshot = self.stats;
         self.begin_draw(material)?;
         let lights = Lights::UNLIT;
@@ -350,16 +476,16 @@ where
     }
 
     fn begin_draw(&mut self, program: &'m dyn MaterialProgram<C, S, V>) -> Result<(), DrawError> {
-        let first = self.r.triangles.len() as u16;
+        let first = self.n_triangles as u16;
         self.draws.push((program, first)).map_err(|_| DrawError::DrawCallCapacity)?;
         self.stats.draw_calls += 1;
         Ok(())
     }
 
     fn rollback(&mut self, vertices: usize, stats: FrameStats) {
-        self.r.vertices.truncate(vertices);
+        self.n_vertices = vertices;
         if let Some((_, first)) = self.draws.pop() {
-            self.r.triangles.truncate(first as usize);
+            self.n_triangles = first as usize;
         }
         self.stats = stats;
         self.stats.draw_calls -= 1;
@@ -372,7 +498,7 @@ where
     /// corner in clip space).
     fn assemble(&mut self, corners: Corners, face: Rgb888, cull: Cull, perspective: bool, clip_vertex: impl Fn(usize) -> ClipVertex<V>) -> Result<(), DrawError> {
         self.stats.triangles += 1;
-        let vs = &self.r.vertices;
+        let vs = &self.b.vertices;
         let fl = [vertex::flags(&vs[corners[0] as usize]), vertex::flags(&vs[corners[1] as usize]), vertex::flags(&vs[corners[2] as usize])];
         if fl == [0, 0, 0] {
             return self.emit(corners, face, cull);
@@ -388,7 +514,7 @@ where
         self.stats.clipped += 1;
         let mut poly: Polygon<ClipVertex<V>> = (0..3).map(&clip_vertex).collect();
         clip::clip_near_far(&mut poly);
-        let window: Polygon<WindowVertex<V>> = poly.iter().map(|v| clip::to_window(v, W as f32, H as f32)).collect();
+        let window: Polygon<WindowVertex<V>> = poly.iter().map(|v| clip::to_window(v, self.b.width as f32, self.b.height as f32)).collect();
         if window.len() < 3 {
             self.stats.off_screen += 1;
             return Ok(());
@@ -416,12 +542,8 @@ where
                 self.stats.invalid += 1;
                 return Ok(());
             };
-            let i = self.r.vertices.len();
-            self.r
-                .vertices
-                .push(ScreenVertex { x, y, z: v.z, q: v.q, attrs: v.attrs })
-                .map_err(|_| DrawError::VertexCapacity { needed: i + 1, capacity: VERTS })?;
-            let _ = idx.push(i as u16);
+            let i = self.push_vertex(ScreenVertex { x, y, z: v.z, q: v.q, attrs: v.attrs })?;
+            let _ = idx.push(i);
         }
         for k in 1..idx.len().saturating_sub(1) {
             self.emit([idx[0], idx[k], idx[k + 1]], face, cull)?;
@@ -432,7 +554,7 @@ where
     /// Culls a snapped triangle (degenerate, back-facing, off screen) or
     /// queues it.
     fn emit(&mut self, corners: Corners, face: Rgb888, cull: Cull) -> Result<(), DrawError> {
-        let vs = &self.r.vertices;
+        let vs = &self.b.vertices;
         let [a, b, c] = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];
         let area = signed_area2(a, b, c);
         if area == 0 {
@@ -444,59 +566,59 @@ where
             return Ok(());
         }
         let bits = S::SUBPIXEL_BITS;
-        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).clamp(0, H as i32);
-        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).clamp(0, H as i32);
+        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).clamp(0, self.b.height as i32);
+        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).clamp(0, self.b.height as i32);
         // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
         let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
         let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
-        if first >= end || right <= 0 || left >= W as i32 {
+        if first >= end || right <= 0 || left >= self.b.width as i32 {
             self.stats.off_screen += 1;
             return Ok(());
         }
         let rec = TriRecord { v: corners, next: NONE, first_row: first as u16, end_row: end as u16, face: pack(face) };
-        self.r.triangles.push(rec).map_err(|_| DrawError::TriangleCapacity { capacity: TRIS })?;
+        let capacity = self.b.triangles.len();
+        *self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })? = rec;
+        self.n_triangles += 1;
         self.stats.queued += 1;
         Ok(())
     }
 
     /// Rasterizes the frame strip by strip into `target`.
     pub fn finish<T: DrawTarget<Color = C>>(self, target: &mut T) -> Result<FrameStats, T::Error> {
-        let Frame { r, draws, background, stats, .. } = self;
-        let strips = H.div_ceil(STRIP);
+        let Frame { b, n_triangles, draws, background, stats, .. } = self;
+        let (width, height, strip_rows) = (b.width, b.height, b.strip);
+        let tris = &mut b.triangles[..n_triangles];
+        let strips = height.div_ceil(strip_rows);
         // Bin by first strip; pushing in reverse keeps each list in
         // submission order.
-        r.heads[..strips].fill(NONE);
-        for i in (0..r.triangles.len()).rev() {
-            let s = r.triangles[i].first_row as usize / STRIP;
-            r.triangles[i].next = r.heads[s];
-            r.heads[s] = i as u16;
+        b.heads[..strips].fill(NONE);
+        for i in (0..tris.len()).rev() {
+            let s = tris[i].first_row as usize / strip_rows;
+            tris[i].next = b.heads[s];
+            b.heads[s] = i as u16;
         }
         // Triangles that continue into the next strip, in submission order.
         let mut carried = NONE;
         for s in 0..strips {
-            let y0 = s * STRIP;
-            let rows = STRIP.min(H - y0);
-            for row in r.color.iter_mut().take(rows) {
-                row.fill(background);
-            }
-            for row in r.depth.iter_mut().take(rows) {
-                row.fill(DEPTH_CLEAR);
-            }
+            let y0 = s * strip_rows;
+            let rows = strip_rows.min(height - y0);
             let mut strip = StripTarget {
-                color: r.color[..rows].as_flattened_mut(),
-                depth: r.depth[..rows].as_flattened_mut(),
-                width: W,
+                color: &mut b.color[..rows * width],
+                depth: &mut b.depth[..rows * width],
+                width,
                 y0: y0 as i32,
                 rows: rows as i32,
             };
-            let (mut fresh, mut old) = (r.heads[s], carried);
+            strip.color.fill(background);
+            strip.depth.fill(DEPTH_CLEAR);
+            let (mut fresh, mut old) = (b.heads[s], carried);
             let (mut next_head, mut next_tail) = (NONE, NONE);
             let mut draw = 0;
             // Merge the two lists by index, i.e. in submission order.
             while fresh != NONE || old != NONE {
                 let take_fresh = old == NONE || (fresh != NONE && fresh < old);
                 let i = if take_fresh { fresh } else { old };
-                let rec = r.triangles[i as usize];
+                let rec = tris[i as usize];
                 if take_fresh {
                     fresh = rec.next;
                 } else {
@@ -505,21 +627,21 @@ where
                 while draw + 1 < draws.len() && draws[draw + 1].1 <= i {
                     draw += 1;
                 }
-                let vs = &r.vertices;
+                let vs = &b.vertices;
                 let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
                 draws[draw].0.rasterize(&mut strip, tri, C::from(unpack(rec.face)));
                 if rec.end_row as usize > y0 + rows {
-                    r.triangles[i as usize].next = NONE;
+                    tris[i as usize].next = NONE;
                     if next_tail == NONE {
                         next_head = i;
                     } else {
-                        r.triangles[next_tail as usize].next = i;
+                        tris[next_tail as usize].next = i;
                     }
                     next_tail = i;
                 }
             }
             carried = next_head;
-            let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(W as u32, rows as u32));
+            let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(width as u32, rows as u32));
             target.fill_contiguous(&area, strip.color.iter().copied())?;
         }
         Ok(stats)

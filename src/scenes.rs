@@ -1,0 +1,60 @@
+//! Built-in scenes made of generated meshes, shared by the demo, the tests
+//! and the benchmarks, so that none of them needs a file.
+
+use crate::effect::{Flat, Gouraud};
+use crate::material::Material;
+use crate::math::{Mat4, Vec3};
+use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, MeshData};
+use crate::renderer::{DrawError, Frame};
+use crate::scene::{Camera, DirectionalLight, Lights, PointLight};
+use crate::settings::Settings;
+use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
+
+/// A torus, 32 × 16 segments (561 vertices, 1,024 triangles).
+pub static TORUS: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
+/// A UV sphere, 24 × 16 segments (425 vertices, 720 triangles).
+pub static SPHERE: MeshData<{ sphere_vertex_count(24, 16) }, { sphere_index_count(24, 16) }> = MeshData::uv_sphere(24, 16, 0.8);
+/// A cube of edge 1.2 (24 vertices, 12 triangles).
+pub static CUBE: MeshData<24, 36> = MeshData::cube(1.2);
+
+/// Gouraud-shaded orange.
+pub static ORANGE: Material<Gouraud> = Material::new(Gouraud).with_color(Rgb888::new(255, 140, 40));
+/// Flat-shaded blue.
+pub static BLUE: Material<Flat> = Material::new(Flat).with_color(Rgb888::new(70, 130, 255));
+/// Gouraud-shaded green.
+pub static GREEN: Material<Gouraud> = Material::new(Gouraud).with_color(Rgb888::new(90, 220, 110));
+
+/// Vertices the demo scene needs per frame (plus room for clipping).
+pub const DEMO_VERTICES: usize = 1100;
+/// Triangles the demo scene can queue per frame.
+pub const DEMO_TRIANGLES: usize = 1800;
+
+/// The demo's camera.
+pub fn demo_camera() -> Camera {
+    Camera::looking_at(Vec3::new(0.0, 2.2, -6.0), Vec3::new(0.0, 0.0, 0.0))
+}
+
+/// The demo's lights: ambient, a white directional light from the upper
+/// left, and a warm point light to the right.
+pub fn demo_lights() -> Lights {
+    Lights {
+        ambient: Vec3::new(0.12, 0.12, 0.15),
+        point: Some(PointLight { position: Vec3::new(4.0, 3.0, -3.0), color: Vec3::new(0.6, 0.45, 0.3) }),
+        directional: Some(DirectionalLight { direction: Vec3::new(0.6, -0.8, 0.7), color: Vec3::new(0.7, 0.7, 0.7) }),
+    }
+}
+
+/// Draws the demo scene at time `t` (seconds): a spinning Gouraud torus
+/// between a flat cube and a Gouraud sphere.
+pub fn draw_demo<C, const V: usize, S>(frame: &mut Frame<'_, '_, C, V, S>, t: f32) -> Result<(), DrawError>
+where
+    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    S: Settings,
+{
+    let spin = Mat4::rotation_y(t * 0.9) * Mat4::rotation_x(0.6 + t * 0.5);
+    frame.draw(&TORUS.mesh(), &spin, &ORANGE)?;
+    let cube = Mat4::translation(Vec3::new(-2.4, 0.0, 0.5)) * Mat4::rotation_y(-t * 1.3) * Mat4::rotation_x(0.5);
+    frame.draw(&CUBE.mesh(), &cube, &BLUE)?;
+    let sphere = Mat4::translation(Vec3::new(2.4, 0.2 * crate::math::sin(t * 2.0), 0.5)) * Mat4::rotation_y(t);
+    frame.draw(&SPHERE.mesh(), &sphere, &GREEN)
+}
