@@ -20,10 +20,10 @@ use embedded_graphics::prelude::RgbColor;
 use soft3d::effect::{Effect, Flat, FragmentCount, VertexColor};
 use soft3d::host::{write_png, Image};
 use soft3d::material::{DepthOff, PerPixel};
+use soft3d::math::Mat4;
 use soft3d::math::{Fixed, Interp};
 use soft3d::tri::TriVertex;
 use soft3d::{Cull, HostRenderer, Lights, Material, Precision, Settings};
-use soft3d::math::Mat4;
 
 struct Options {
     input: String,
@@ -144,7 +144,8 @@ fn draw<S: Settings, E: Effect, P: soft3d::material::Perspective, D: soft3d::mat
     // Guard-band clipping can turn one triangle into a fan of up to seven.
     let verts = (tris.len() * 9 + 3).min(65534);
     let queued = (tris.len() * 7 + 1).min(65534);
-    let mut renderer: HostRenderer<Rgb888, 3, S> = HostRenderer::new(o.width, o.height, strip, verts, queued, Rgb888::BLACK).map_err(|e| e.to_string())?;
+    let mut renderer: HostRenderer<Rgb888, 3, S> =
+        HostRenderer::new(o.width, o.height, strip, verts, queued, Rgb888::BLACK).map_err(|e| e.to_string())?;
     let mut frame = renderer.begin_frame_with(Mat4::IDENTITY, &Lights::UNLIT, Rgb888::BLACK);
     frame.draw_window_triangles(tris.iter().copied(), material).map_err(|e| format!("{}: {e}", o.input))?;
     let mut image = Image::new(o.width as u32, o.height as u32, Rgb888::BLACK);

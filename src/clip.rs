@@ -43,7 +43,7 @@ pub fn sphere_in_frustum(view_proj: &Mat4, center: Vec3, radius: f32) -> SphereT
     for p in planes {
         let n = Vec3::new(p[0], p[1], p[2]);
         let len = n.length();
-        if !(len > 0.0) {
+        if len.is_nan() || len <= 0.0 {
             continue;
         }
         let dist = (n.dot(center) + p[3]) / len;
@@ -151,11 +151,7 @@ pub fn clip_guard<const V: usize>(poly: &mut Polygon<WindowVertex<V>>, limit: f6
         let q = a.q + (b.q - a.q) * tf;
         let mut attrs = a.attrs;
         for (o, (x, y)) in attrs.iter_mut().zip(a.attrs.iter().zip(b.attrs.iter())) {
-            *o = if perspective && q > 0.0 {
-                (x * a.q + (y * b.q - x * a.q) * tf) / q
-            } else {
-                x + (y - x) * tf
-            };
+            *o = if perspective && q > 0.0 { (x * a.q + (y * b.q - x * a.q) * tf) / q } else { x + (y - x) * tf };
         }
         WindowVertex { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, z: a.z + (b.z - a.z) * tf, q, attrs, src: NO_SOURCE }
     };
@@ -176,11 +172,13 @@ mod tests {
     #[test]
     fn near_clip_splits_into_at_most_two_triangles() {
         // One vertex behind: quad. Two behind: triangle.
-        let mut p: Polygon<_> = [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, 1.0, 2.0, 1.0), cv(0.0, 1.0, 1.0, 2.0, 1.0)].into_iter().collect();
+        let mut p: Polygon<_> =
+            [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, 1.0, 2.0, 1.0), cv(0.0, 1.0, 1.0, 2.0, 1.0)].into_iter().collect();
         clip_near_far(&mut p);
         assert_eq!(p.len(), 4);
         assert!(p.iter().all(|v| v.pos.z >= -1e-6 && v.pos.w > 0.0));
-        let mut p: Polygon<_> = [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, -1.0, 0.5, 0.0), cv(0.0, 1.0, 1.0, 2.0, 1.0)].into_iter().collect();
+        let mut p: Polygon<_> =
+            [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, -1.0, 0.5, 0.0), cv(0.0, 1.0, 1.0, 2.0, 1.0)].into_iter().collect();
         clip_near_far(&mut p);
         assert_eq!(p.len(), 3);
         // The attribute is interpolated at the crossing: z goes -1 -> 1, so t = 0.5.
@@ -189,7 +187,8 @@ mod tests {
 
     #[test]
     fn all_behind_clips_to_nothing() {
-        let mut p: Polygon<_> = [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, -2.0, 0.5, 0.0), cv(0.0, 1.0, -0.1, 0.5, 0.0)].into_iter().collect();
+        let mut p: Polygon<_> =
+            [cv(0.0, 0.0, -1.0, 0.5, 0.0), cv(1.0, 0.0, -2.0, 0.5, 0.0), cv(0.0, 1.0, -0.1, 0.5, 0.0)].into_iter().collect();
         clip_near_far(&mut p);
         assert!(p.is_empty());
     }
@@ -207,7 +206,8 @@ mod tests {
     #[test]
     fn guard_clip_keeps_depth_and_perspective_exact() {
         let w = |x: f64, q: f32, a: f32| WindowVertex { x, y: 0.0, z: 0.5, q, attrs: [a], src: NO_SOURCE };
-        let mut p: Polygon<_> = [w(-3000.0, 1.0, 0.0), w(1000.0, 0.25, 4.0), WindowVertex { y: 10.0, ..w(0.0, 1.0, 0.0) }].into_iter().collect();
+        let mut p: Polygon<_> =
+            [w(-3000.0, 1.0, 0.0), w(1000.0, 0.25, 4.0), WindowVertex { y: 10.0, ..w(0.0, 1.0, 0.0) }].into_iter().collect();
         clip_guard(&mut p, 2000.0, true);
         assert!(p.iter().all(|v| v.x >= -2000.0 && v.x <= 2000.0));
         // At x = -2000, t = 0.25 along the first edge: q = 0.8125 and the

@@ -35,7 +35,8 @@ impl<C: PixelColor> Image<C> {
     }
 
     fn index(&self, p: Point) -> Option<usize> {
-        (p.x >= 0 && p.y >= 0 && (p.x as u32) < self.width && (p.y as u32) < self.height).then(|| p.y as usize * self.width as usize + p.x as usize)
+        (p.x >= 0 && p.y >= 0 && (p.x as u32) < self.width && (p.y as u32) < self.height)
+            .then(|| p.y as usize * self.width as usize + p.x as usize)
     }
 }
 

@@ -203,12 +203,8 @@ pub struct StripTarget<'a, C> {
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
 #[allow(clippy::too_many_arguments)]
 #[inline(never)]
-pub fn rasterize<C, S, E, P, D, const V: usize>(
-    target: &mut StripTarget<'_, C>,
-    tri: [&ScreenVertex<V>; 3],
-    face: C,
-    subpixel_bits: u32,
-) where
+pub fn rasterize<C, S, E, P, D, const V: usize>(target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, subpixel_bits: u32)
+where
     C: From<Rgb888> + Into<Rgb888> + Copy,
     S: Interp,
     E: Effect,
@@ -281,11 +277,8 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     }
 
     let mut long = EdgeWalker::new(a.x, a.y, c.x, c.y, y_start, f);
-    let mut short = if y_start < y_mid {
-        EdgeWalker::new(a.x, a.y, b.x, b.y, y_start, f)
-    } else {
-        EdgeWalker::new(b.x, b.y, c.x, c.y, y_start, f)
-    };
+    let mut short =
+        if y_start < y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y_start, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y_start, f) };
 
     for y in y_start..y_end {
         if y == y_mid && y_mid > y_start {

@@ -154,7 +154,16 @@ where
 ///
 /// See the [module docs](self) for the RAM formula. `new` is a `const fn`,
 /// so a renderer can be placed in a `static` rather than on the stack.
-pub struct Renderer<C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize = 3, S = FixedPoint> {
+pub struct Renderer<
+    C,
+    const W: usize,
+    const H: usize,
+    const STRIP: usize,
+    const VERTS: usize,
+    const TRIS: usize,
+    const V: usize = 3,
+    S = FixedPoint,
+> {
     color: [[C; W]; STRIP],
     depth: [[u16; W]; STRIP],
     vertices: [ScreenVertex<V>; VERTS],
@@ -496,10 +505,18 @@ where
     /// triangle with a vertex behind the near plane, beyond the far plane
     /// or outside the guard band is clipped (`clip_vertex` recomputes a
     /// corner in clip space).
-    fn assemble(&mut self, corners: Corners, face: Rgb888, cull: Cull, perspective: bool, clip_vertex: impl Fn(usize) -> ClipVertex<V>) -> Result<(), DrawError> {
+    fn assemble(
+        &mut self,
+        corners: Corners,
+        face: Rgb888,
+        cull: Cull,
+        perspective: bool,
+        clip_vertex: impl Fn(usize) -> ClipVertex<V>,
+    ) -> Result<(), DrawError> {
         self.stats.triangles += 1;
         let vs = &self.b.vertices;
-        let fl = [vertex::flags(&vs[corners[0] as usize]), vertex::flags(&vs[corners[1] as usize]), vertex::flags(&vs[corners[2] as usize])];
+        let fl =
+            [vertex::flags(&vs[corners[0] as usize]), vertex::flags(&vs[corners[1] as usize]), vertex::flags(&vs[corners[2] as usize])];
         if fl == [0, 0, 0] {
             return self.emit(corners, face, cull);
         }

@@ -94,7 +94,7 @@ pub fn parse_vertex(line: &str, line_no: usize) -> Result<Option<TriVertex>, Tri
     if !z.is_finite() {
         return Err(err(TriErrorKind::NotFinite(3)));
     }
-    if !(w > 0.0) || !w.is_finite() {
+    if w.is_nan() || w <= 0.0 || !w.is_finite() {
         return Err(err(if w.is_finite() { TriErrorKind::NonPositiveW } else { TriErrorKind::NotFinite(4) }));
     }
     let mut rgb = [0u8; 3];

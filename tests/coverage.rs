@@ -84,7 +84,13 @@ fn grids_of_quads_split_both_ways_cover_once() {
     for flip in [false, true] {
         let (nx, ny) = (7, 6);
         // A jittered grid: shared vertices, irregular quads.
-        let pts: Vec<Vec<(f64, f64)>> = (0..=ny).map(|j| (0..=nx).map(|i| (i as f64 * 8.0 + rng.grid(-2.0, 2.0, 0.0625) - 3.0, j as f64 * 8.0 + rng.grid(-2.0, 2.0, 0.0625) - 3.0)).collect()).collect();
+        let pts: Vec<Vec<(f64, f64)>> = (0..=ny)
+            .map(|j| {
+                (0..=nx)
+                    .map(|i| (i as f64 * 8.0 + rng.grid(-2.0, 2.0, 0.0625) - 3.0, j as f64 * 8.0 + rng.grid(-2.0, 2.0, 0.0625) - 3.0))
+                    .collect()
+            })
+            .collect();
         let mut tris = Vec::new();
         for j in 0..ny {
             for i in 0..nx {
@@ -195,7 +201,11 @@ fn triangles_beyond_the_guard_band_are_clipped_without_visible_change() {
     let mut rng = Rng(31337);
     for bits in [4, 8] {
         for _ in 0..100 {
-            let pts = [(rng.grid(-1e9, 1e9, 1.0), rng.grid(-1e9, 1e9, 1.0)), (rng.grid(0.0, 32.0, 0.0625), rng.grid(0.0, 24.0, 0.0625)), (rng.grid(-1e8, 1e8, 1.0), rng.grid(-1e8, 1e8, 1.0))];
+            let pts = [
+                (rng.grid(-1e9, 1e9, 1.0), rng.grid(-1e9, 1e9, 1.0)),
+                (rng.grid(0.0, 32.0, 0.0625), rng.grid(0.0, 24.0, 0.0625)),
+                (rng.grid(-1e8, 1e8, 1.0), rng.grid(-1e8, 1e8, 1.0)),
+            ];
             let tri = [tv(pts[0].0, pts[0].1), tv(pts[1].0, pts[1].1), tv(pts[2].0, pts[2].1)];
             let got = coverage(&[tri], 32, 24, 8, bits);
             let want = oracle(&pts, 32, 24, bits);

@@ -19,9 +19,7 @@ pub struct Mat4 {
 
 impl Mat3 {
     /// The identity.
-    pub const IDENTITY: Self = Self {
-        m: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-    };
+    pub const IDENTITY: Self = Self { m: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] };
     /// All zeros.
     pub const ZERO: Self = Self { m: [[0.0; 3]; 3] };
 
@@ -39,8 +37,7 @@ impl Mat3 {
     /// Determinant.
     pub fn determinant(&self) -> f32 {
         let m = &self.m;
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
     }
 
@@ -58,9 +55,7 @@ impl Mat3 {
         let inv = 1.0 / det;
         // Cofactor matrix divided by the determinant is the inverse
         // transposed, so no explicit transpose is needed.
-        let c = |r0: usize, r1: usize, c0: usize, c1: usize| {
-            (m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]) * inv
-        };
+        let c = |r0: usize, r1: usize, c0: usize, c1: usize| (m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]) * inv;
         Self {
             m: [
                 [c(1, 2, 1, 2), -c(1, 2, 0, 2), c(1, 2, 0, 1)],
@@ -73,76 +68,34 @@ impl Mat3 {
 
 impl Mat4 {
     /// The identity.
-    pub const IDENTITY: Self = Self {
-        m: [
-            [1.0, 0.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0, 0.0],
-            [0.0, 0.0, 1.0, 0.0],
-            [0.0, 0.0, 0.0, 1.0],
-        ],
-    };
+    pub const IDENTITY: Self = Self { m: [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]] };
 
     /// Translation by `t`.
     pub const fn translation(t: Vec3) -> Self {
-        Self {
-            m: [
-                [1.0, 0.0, 0.0, t.x],
-                [0.0, 1.0, 0.0, t.y],
-                [0.0, 0.0, 1.0, t.z],
-                [0.0, 0.0, 0.0, 1.0],
-            ],
-        }
+        Self { m: [[1.0, 0.0, 0.0, t.x], [0.0, 1.0, 0.0, t.y], [0.0, 0.0, 1.0, t.z], [0.0, 0.0, 0.0, 1.0]] }
     }
 
     /// Non-uniform scaling.
     pub const fn scaling(s: Vec3) -> Self {
-        Self {
-            m: [
-                [s.x, 0.0, 0.0, 0.0],
-                [0.0, s.y, 0.0, 0.0],
-                [0.0, 0.0, s.z, 0.0],
-                [0.0, 0.0, 0.0, 1.0],
-            ],
-        }
+        Self { m: [[s.x, 0.0, 0.0, 0.0], [0.0, s.y, 0.0, 0.0], [0.0, 0.0, s.z, 0.0], [0.0, 0.0, 0.0, 1.0]] }
     }
 
     /// Rotation about the x axis by `a` radians (y turns toward z).
     pub fn rotation_x(a: f32) -> Self {
         let (s, c) = (super::sin(a), super::cos(a));
-        Self {
-            m: [
-                [1.0, 0.0, 0.0, 0.0],
-                [0.0, c, -s, 0.0],
-                [0.0, s, c, 0.0],
-                [0.0, 0.0, 0.0, 1.0],
-            ],
-        }
+        Self { m: [[1.0, 0.0, 0.0, 0.0], [0.0, c, -s, 0.0], [0.0, s, c, 0.0], [0.0, 0.0, 0.0, 1.0]] }
     }
 
     /// Rotation about the y axis by `a` radians (z turns toward x).
     pub fn rotation_y(a: f32) -> Self {
         let (s, c) = (super::sin(a), super::cos(a));
-        Self {
-            m: [
-                [c, 0.0, s, 0.0],
-                [0.0, 1.0, 0.0, 0.0],
-                [-s, 0.0, c, 0.0],
-                [0.0, 0.0, 0.0, 1.0],
-            ],
-        }
+        Self { m: [[c, 0.0, s, 0.0], [0.0, 1.0, 0.0, 0.0], [-s, 0.0, c, 0.0], [0.0, 0.0, 0.0, 1.0]] }
     }
 
     /// Rotation about the z axis by `a` radians (x turns toward y).
     pub fn rotation_z(a: f32) -> Self {
         let (s, c) = (super::sin(a), super::cos(a));
-        Self {
-            m: [
-                [c, -s, 0.0, 0.0],
-                [s, c, 0.0, 0.0],
-                [0.0, 0.0, 1.0, 0.0],
-                [0.0, 0.0, 0.0, 1.0],
-            ],
-        }
+        Self { m: [[c, -s, 0.0, 0.0], [s, c, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]] }
     }
 
     /// Left-handed view matrix looking from `eye` toward `target`
@@ -162,14 +115,7 @@ impl Mat4 {
             x = alt.cross(z).normalize_or_zero();
         }
         let y = z.cross(x);
-        Self {
-            m: [
-                [x.x, x.y, x.z, -x.dot(eye)],
-                [y.x, y.y, y.z, -y.dot(eye)],
-                [z.x, z.y, z.z, -z.dot(eye)],
-                [0.0, 0.0, 0.0, 1.0],
-            ],
-        }
+        Self { m: [[x.x, x.y, x.z, -x.dot(eye)], [y.x, y.y, y.z, -y.dot(eye)], [z.x, z.y, z.z, -z.dot(eye)], [0.0, 0.0, 0.0, 1.0]] }
     }
 
     /// Left-handed perspective projection (Babylon's `PerspectiveFovLH`):
@@ -181,14 +127,7 @@ impl Mat4 {
         let ys = 1.0 / super::tan(fov_y * 0.5);
         let xs = ys / aspect;
         let q = far / (far - near);
-        Self {
-            m: [
-                [xs, 0.0, 0.0, 0.0],
-                [0.0, ys, 0.0, 0.0],
-                [0.0, 0.0, q, -near * q],
-                [0.0, 0.0, 1.0, 0.0],
-            ],
-        }
+        Self { m: [[xs, 0.0, 0.0, 0.0], [0.0, ys, 0.0, 0.0], [0.0, 0.0, q, -near * q], [0.0, 0.0, 1.0, 0.0]] }
     }
 
     /// Transforms a homogeneous vector.
@@ -218,13 +157,7 @@ impl Mat4 {
     /// The upper-left 3×3 part (rotation and scale).
     pub fn upper3(&self) -> Mat3 {
         let m = &self.m;
-        Mat3 {
-            m: [
-                [m[0][0], m[0][1], m[0][2]],
-                [m[1][0], m[1][1], m[1][2]],
-                [m[2][0], m[2][1], m[2][2]],
-            ],
-        }
+        Mat3 { m: [[m[0][0], m[0][1], m[0][2]], [m[1][0], m[1][1], m[1][2]], [m[2][0], m[2][1], m[2][2]]] }
     }
 
     /// The matrix that transforms normals of a mesh placed by this model

@@ -12,8 +12,7 @@
 mod shapes;
 
 pub use shapes::{
-    cube_index_count, cube_vertex_count, sphere_index_count, sphere_vertex_count, torus_index_count,
-    torus_vertex_count, MeshData,
+    cube_index_count, cube_vertex_count, sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, MeshData,
 };
 
 use crate::math::{Vec2, Vec3};
@@ -196,7 +195,7 @@ const fn bounding_sphere(p: &[Vec3]) -> Sphere {
 }
 
 const fn finite(v: f32) -> bool {
-    v == v && v > f32::MIN && v < f32::MAX
+    !v.is_nan() && v > f32::MIN && v < f32::MAX
 }
 
 #[cfg(test)]
@@ -208,7 +207,10 @@ mod tests {
 
     #[test]
     fn validation_reports_what_is_wrong() {
-        assert_eq!(Mesh::new(&P, &N[..2], &[0, 1, 2]).unwrap_err(), MeshError::AttributeLength { attribute: "normals", len: 2, positions: 3 });
+        assert_eq!(
+            Mesh::new(&P, &N[..2], &[0, 1, 2]).unwrap_err(),
+            MeshError::AttributeLength { attribute: "normals", len: 2, positions: 3 }
+        );
         assert_eq!(Mesh::new(&P, &N, &[0, 1]).unwrap_err(), MeshError::IndexCount(2));
         assert_eq!(Mesh::new(&P, &N, &[0, 1, 3]).unwrap_err(), MeshError::IndexOutOfRange { at: 2, index: 3, vertices: 3 });
         assert!(Mesh::new(&P, &N, &[0, 1, 2]).unwrap().with_uvs(&[Vec2::new(0.0, 0.0)]).is_err());

@@ -96,11 +96,8 @@ impl<const V: usize, const I: usize> MeshData<V, I> {
             while k < 4 {
                 let (cu, cv) = (corners[k][0], corners[k][1]);
                 let i = f * 4 + k;
-                d.positions[i] = Vec3::new(
-                    (a[0] + cu * a[3] + cv * a[6]) * h,
-                    (a[1] + cu * a[4] + cv * a[7]) * h,
-                    (a[2] + cu * a[5] + cv * a[8]) * h,
-                );
+                d.positions[i] =
+                    Vec3::new((a[0] + cu * a[3] + cv * a[6]) * h, (a[1] + cu * a[4] + cv * a[7]) * h, (a[2] + cu * a[5] + cv * a[8]) * h);
                 d.normals[i] = n;
                 d.uvs[i] = Vec2::new((cu + 1.0) * 0.5, (1.0 - cv) * 0.5);
                 k += 1;
@@ -122,7 +119,10 @@ impl<const V: usize, const I: usize> MeshData<V, I> {
     /// `rings` from pole to pole (at least 2).
     pub const fn uv_sphere(segments: usize, rings: usize, radius: f32) -> Self {
         assert!(segments >= 3 && rings >= 2, "a sphere needs 3 segments and 2 rings");
-        assert!(V == sphere_vertex_count(segments, rings) && I == sphere_index_count(segments, rings), "use sphere_vertex_count() and sphere_index_count()");
+        assert!(
+            V == sphere_vertex_count(segments, rings) && I == sphere_index_count(segments, rings),
+            "use sphere_vertex_count() and sphere_index_count()"
+        );
         assert!(V <= 1 << 16, "too many vertices for u16 indices");
         let mut d = Self::EMPTY;
         let mut r = 0;
@@ -248,7 +248,7 @@ pub(crate) const fn sin_cos(x: f64) -> (f64, f64) {
 
 /// Square root for compile-time use (Newton's method in `f64`).
 pub(crate) const fn const_sqrt(x: f64) -> f64 {
-    if x <= 0.0 || x != x {
+    if x <= 0.0 || x.is_nan() {
         return 0.0;
     }
     let mut g = if x > 1.0 { x } else { 1.0 };

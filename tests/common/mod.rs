@@ -109,6 +109,13 @@ impl Rng {
 
 /// Describes where two coverage images differ.
 pub fn diff(a: &[u8], b: &[u8], width: usize) -> String {
-    let bad: Vec<String> = a.iter().zip(b).enumerate().filter(|(_, (x, y))| x != y).take(10).map(|(i, (x, y))| format!("({}, {}): {x} vs {y}", i % width, i / width)).collect();
+    let bad: Vec<String> = a
+        .iter()
+        .zip(b)
+        .enumerate()
+        .filter(|(_, (x, y))| x != y)
+        .take(10)
+        .map(|(i, (x, y))| format!("({}, {}): {x} vs {y}", i % width, i / width))
+        .collect();
     format!("{} pixels differ, first: {}", a.iter().zip(b).filter(|(x, y)| x != y).count(), bad.join("; "))
 }
