@@ -1,0 +1,298 @@
+//! End-to-end behaviour of the mesh pipeline: golden images, strips versus
+//! full frames, near-plane clipping, culling, lighting invariants, memory.
+
+mod common;
+use common::*;
+use embedded_graphics::mock_display::MockDisplay;
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use soft3d::effect::{FragmentCount, Gouraud, VertexColor};
+use soft3d::host::{load_png, Image};
+use soft3d::material::DepthOff;
+use soft3d::math::{Mat4, Vec3};
+use soft3d::mesh::{Mesh, MeshData};
+use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VERTICES, SPHERE, TORUS};
+use soft3d::{Camera, Cull, DrawError, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, Renderer, Settings};
+
+fn demo_image<S: Settings>(w: usize, h: usize, strip: usize, t: f32) -> Image<Rgb565> {
+    let mut r: HostRenderer<Rgb565, 3, S> = HostRenderer::new(w, h, strip, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).unwrap();
+    let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::new(2, 4, 6));
+    draw_demo(&mut frame, t).unwrap();
+    let mut img = Image::new(w as u32, h as u32, Rgb565::BLACK);
+    let Ok(_) = frame.finish(&mut img);
+    img
+}
+
+/// Compares with `tests/golden/NAME.png`; `SOFT3D_BLESS=1` rewrites it.
+fn golden(name: &str, img: &Image<Rgb565>) {
+    let path = format!("{}/tests/golden/{name}.png", env!("CARGO_MANIFEST_DIR"));
+    if std::env::var_os("SOFT3D_BLESS").is_some() {
+        img.save_png(&path).unwrap();
+        eprintln!("blessed {path}");
+        return;
+    }
+    let want = load_png(&path).unwrap_or_else(|e| panic!("{path}: {e} (run with SOFT3D_BLESS=1 to create it)"));
+    let got: Vec<Rgb888> = img.pixels.iter().map(|&c| c.into()).collect();
+    assert_eq!((want.width, want.height), (img.width, img.height));
+    let differ = got.iter().zip(&want.pixels).filter(|(a, b)| a != b).count();
+    if differ != 0 {
+        let out = std::env::temp_dir().join(format!("{name}-actual.png"));
+        img.save_png(&out).unwrap();
+        panic!("{name}: {differ} pixels differ from {path}; actual image written to {}", out.display());
+    }
+}
+
+#[test]
+fn golden_images_of_the_builtin_scene() {
+    golden("demo-fixed-t0", &demo_image::<FixedPoint>(160, 120, 16, 0.0));
+    golden("demo-fixed-t17", &demo_image::<FixedPoint>(160, 120, 16, 1.7));
+    golden("demo-f32-t17", &demo_image::<FloatingPoint>(160, 120, 16, 1.7));
+}
+
+#[test]
+fn fixed_and_float_interpolation_agree_to_a_color_step() {
+    // Same coverage and depth decisions; colors within one Rgb565 step.
+    let a = demo_image::<FixedPoint>(160, 120, 16, 1.7);
+    let b = demo_image::<FloatingPoint>(160, 120, 16, 1.7);
+    let mut worse = 0;
+    for (p, q) in a.pixels.iter().zip(&b.pixels) {
+        let d = (p.r() as i32 - q.r() as i32).abs().max((p.g() as i32 - q.g() as i32).abs()).max((p.b() as i32 - q.b() as i32).abs());
+        assert!(d <= 1, "{p:?} vs {q:?}");
+        worse += (d > 0) as u32;
+    }
+    assert!(worse < 200, "{worse} pixels differ by one step");
+}
+
+#[test]
+fn strips_render_exactly_the_full_frame() {
+    let full = demo_image::<FixedPoint>(160, 120, 120, 0.9);
+    for strip in [1, 7, 16, 33, 119] {
+        let img = demo_image::<FixedPoint>(160, 120, strip, 0.9);
+        assert_eq!(img.pixels, full.pixels, "strip {strip}");
+        assert_eq!(img.fills, 120u32.div_ceil(strip as u32), "one fill_contiguous per strip");
+    }
+    let f = demo_image::<FloatingPoint>(160, 120, 120, 0.9);
+    assert_eq!(demo_image::<FloatingPoint>(160, 120, 13, 0.9).pixels, f.pixels);
+}
+
+#[test]
+fn the_static_renderer_matches_the_host_renderer_and_draws_each_pixel_once() {
+    // MockDisplay panics if any pixel is drawn twice (strips must not overlap).
+    static CUBE: MeshData<24, 36> = MeshData::cube(1.0);
+    let mut r: Renderer<Rgb565, 64, 64, 8, 64, 64> = Renderer::new(Rgb565::BLACK);
+    let camera = Camera::looking_at(Vec3::new(1.5, 1.5, -3.0), Vec3::ZERO);
+    let m = Material::new(Gouraud).with_color(Rgb888::new(255, 160, 0));
+    let model = Mat4::rotation_y(0.5);
+    let mut frame = r.begin_frame(&camera, &Lights::default(), Rgb565::BLACK);
+    frame.draw(&CUBE.mesh(), &model, &m).unwrap();
+    let mut display: MockDisplay<Rgb565> = MockDisplay::new();
+    frame.finish(&mut display).unwrap();
+
+    let mut h: HostRenderer<Rgb565> = HostRenderer::new(64, 64, 64, 64, 64, Rgb565::BLACK).unwrap();
+    let mut frame = h.begin_frame(&camera, &Lights::default(), Rgb565::BLACK);
+    frame.draw(&CUBE.mesh(), &model, &m).unwrap();
+    let mut img = Image::new(64, 64, Rgb565::BLACK);
+    let Ok(_) = frame.finish(&mut img);
+    for y in 0..64 {
+        for x in 0..64 {
+            assert_eq!(display.get_pixel(embedded_graphics::prelude::Point::new(x, y)), Some(img.get(x as u32, y as u32)));
+        }
+    }
+    assert!(img.pixels.iter().filter(|&&c| c != Rgb565::BLACK).count() > 300);
+}
+
+/// Renders one mesh and returns fragment counts (no depth test).
+fn mesh_coverage(mesh: &Mesh<'_>, model: &Mat4, camera: &Camera, cull: Cull, w: usize, h: usize) -> Vec<u8> {
+    let mut r: HostRenderer<Rgb888> = HostRenderer::new(w, h, 16, 4000, 8000, Rgb888::BLACK).unwrap();
+    let m = Material::new(FragmentCount).with_cull(cull).with_depth::<DepthOff>();
+    let mut frame = r.begin_frame(camera, &Lights::UNLIT, Rgb888::BLACK);
+    frame.draw(mesh, model, &m).unwrap();
+    let mut img = Image::new(w as u32, h as u32, Rgb888::BLACK);
+    let Ok(_) = frame.finish(&mut img);
+    img.pixels.iter().map(|c| c.r()).collect()
+}
+
+#[test]
+fn back_face_culling_is_right_under_perspective() {
+    // For a closed convex mesh, the front faces alone cover the silhouette
+    // exactly once, even far off-axis where a view-space normal test fails.
+    let camera = Camera { fov_y: 1.4, ..Camera::looking_at(Vec3::new(0.0, 0.0, -4.0), Vec3::ZERO) };
+    for (x, y) in [(0.0, 0.0), (2.8, 0.0), (-2.5, 1.8), (1.0, -2.2)] {
+        let model = Mat4::translation(Vec3::new(x, y, 0.0)) * Mat4::rotation_y(0.4);
+        let front = mesh_coverage(&SPHERE.mesh(), &model, &camera, Cull::Back, 120, 90);
+        let all = mesh_coverage(&SPHERE.mesh(), &model, &camera, Cull::None, 120, 90);
+        assert!(front.iter().all(|&c| c <= 1), "at ({x}, {y}) a front face overlaps another");
+        for (f, a) in front.iter().zip(&all) {
+            assert_eq!(*f == 1, *a > 0, "at ({x}, {y}) the front faces do not cover the silhouette");
+        }
+        assert!(front.iter().filter(|&&c| c == 1).count() > 100);
+    }
+}
+
+#[test]
+fn closed_meshes_have_no_cracks_or_overlaps() {
+    // Every silhouette pixel of a closed mesh is covered by exactly two
+    // faces (front and back), never once (a crack) or three times.
+    let camera = Camera::looking_at(Vec3::new(0.3, 1.0, -3.5), Vec3::ZERO);
+    for t in 0..6 {
+        let model = Mat4::rotation_y(t as f32 * 0.7) * Mat4::rotation_x(0.3 * t as f32);
+        let cov = mesh_coverage(&TORUS.mesh(), &model, &camera, Cull::None, 96, 80);
+        // A torus seen from here overlaps itself, so 2 or 4 layers.
+        assert!(cov.iter().all(|&c| c % 2 == 0), "odd coverage: a crack or an overlap");
+        assert!(cov.iter().filter(|&&c| c > 0).count() > 500);
+    }
+}
+
+#[test]
+fn geometry_crossing_the_camera_plane_draws_only_what_is_in_front() {
+    // A large floor quad under the eye extends behind the camera. The
+    // oracle casts a ray through every pixel center and hits the floor in
+    // front of the near plane (f64, independent of the pipeline).
+    static P: [Vec3; 4] = [Vec3::new(-20.0, -1.0, -20.0), Vec3::new(20.0, -1.0, -20.0), Vec3::new(20.0, -1.0, 20.0), Vec3::new(-20.0, -1.0, 20.0)];
+    static N: [Vec3; 4] = [Vec3::new(0.0, 1.0, 0.0); 4];
+    static I: [u16; 6] = [0, 2, 1, 0, 3, 2];
+    let mesh = Mesh::new(&P, &N, &I).unwrap();
+    let (w, h) = (80usize, 60usize);
+    for (pitch, yaw) in [(0.0f32, 0.0f32), (0.3, 0.5), (-0.2, 2.0), (0.6, -1.2)] {
+        let eye = Vec3::new(0.5, 0.0, -2.0);
+        let dir = Vec3::new(yaw.sin() * pitch.cos(), -pitch.sin(), yaw.cos() * pitch.cos());
+        let camera = Camera { near: 0.1, far: 100.0, ..Camera::looking_at(eye, eye + dir) };
+        let got = mesh_coverage(&mesh, &Mat4::IDENTITY, &camera, Cull::None, w, h);
+        // Oracle.
+        let view = camera.view();
+        let tan = (camera.fov_y as f64 * 0.5).tan();
+        let aspect = w as f64 / h as f64;
+        let mut want = vec![0u8; w * h];
+        for y in 0..h {
+            for x in 0..w {
+                let ndc_x = (x as f64 + 0.5) / w as f64 * 2.0 - 1.0;
+                let ndc_y = 1.0 - (y as f64 + 0.5) / h as f64 * 2.0;
+                // View-space ray (x right, y up, z forward), to world with
+                // the transpose of the view rotation.
+                let r = [ndc_x * tan * aspect, ndc_y * tan, 1.0];
+                let m = view.m;
+                let world: Vec<f64> = (0..3).map(|c| (0..3).map(|k| m[k][c] as f64 * r[k]).sum()).collect();
+                if world[1] < 0.0 {
+                    let t = -1.0 / world[1]; // from y = 0 down to y = -1
+                    let (px, pz) = (eye.x as f64 + world[0] * t, eye.z as f64 + world[2] * t);
+                    // Depth along the view axis is t (r.z = 1) and must be within near..far.
+                    if px.abs() < 20.0 && pz.abs() < 20.0 && t > 0.1 && t < 100.0 {
+                        want[y * w + x] = 1;
+                    }
+                }
+            }
+        }
+        let differ = got.iter().zip(&want).filter(|(a, b)| a != b).count();
+        // Only pixels whose centers are within a sub-pixel of the far edge
+        // or horizon may differ; nothing mirrored, nothing drawn twice.
+        assert!(got.iter().all(|&c| c <= 1), "pitch {pitch} yaw {yaw}: overlap");
+        assert!(differ <= 4, "pitch {pitch} yaw {yaw}: {differ} pixels differ from the ray-cast oracle");
+    }
+}
+
+#[test]
+fn lighting_does_not_change_when_mesh_and_camera_move_together() {
+    // Seeds' bug 3: normals transformed with the translation. Moving the
+    // mesh, the camera and the lights by the same offset changes nothing.
+    let render = |offset: Vec3| {
+        let lights = Lights {
+            ambient: Vec3::new(0.1, 0.1, 0.1),
+            point: Some(soft3d::PointLight { position: Vec3::new(2.0, 2.0, -2.0) + offset, color: Vec3::ONE }),
+            directional: None,
+        };
+        let camera = Camera::looking_at(Vec3::new(0.0, 0.5, -3.0) + offset, offset);
+        let mut r: HostRenderer<Rgb888> = HostRenderer::new(64, 48, 16, 1000, 2000, Rgb888::BLACK).unwrap();
+        let m = Material::new(Gouraud).with_color(Rgb888::WHITE);
+        let mut frame = r.begin_frame(&camera, &lights, Rgb888::BLACK);
+        frame.draw(&SPHERE.mesh(), &(Mat4::translation(offset) * Mat4::rotation_y(0.3)), &m).unwrap();
+        let mut img = Image::new(64, 48, Rgb888::BLACK);
+        let Ok(_) = frame.finish(&mut img);
+        img
+    };
+    let a = render(Vec3::ZERO);
+    let b = render(Vec3::new(3.0, -2.0, 5.0));
+    let max = a.pixels.iter().zip(&b.pixels).map(|(p, q)| (p.r() as i32 - q.r() as i32).abs()).max().unwrap();
+    assert!(max <= 2, "lighting changed by {max} levels when everything moved");
+    assert!(a.pixels.iter().any(|p| p.r() > 200) && a.pixels.iter().any(|p| p.r() > 0 && p.r() < 60));
+}
+
+#[test]
+fn depth_test_keeps_the_nearest_surface() {
+    // Two overlapping window-space triangles: the nearer wins whatever the
+    // draw order; equal depth keeps the first drawn ("less").
+    let tri = |z: f32, c: Rgb888| [(2.0, 2.0), (30.0, 4.0), (10.0, 28.0)].map(|(x, y)| soft3d::tri::TriVertex { x, y, z, w: 1.0, color: c });
+    let draw = |tris: Vec<[soft3d::tri::TriVertex; 3]>| {
+        let mut r: HostRenderer<Rgb888> = HostRenderer::new(32, 32, 8, 64, 64, Rgb888::BLACK).unwrap();
+        let m = Material::new(VertexColor).with_cull(Cull::None);
+        let mut frame = r.begin_frame_with(Mat4::IDENTITY, &Lights::UNLIT, Rgb888::BLACK);
+        frame.draw_window_triangles(tris, &m).unwrap();
+        let mut img = Image::new(32, 32, Rgb888::BLACK);
+        let Ok(_) = frame.finish(&mut img);
+        img.get(12, 10)
+    };
+    assert_eq!(draw(vec![tri(0.3, Rgb888::RED), tri(0.6, Rgb888::GREEN)]), Rgb888::RED);
+    assert_eq!(draw(vec![tri(0.6, Rgb888::GREEN), tri(0.3, Rgb888::RED)]), Rgb888::RED);
+    assert_eq!(draw(vec![tri(0.5, Rgb888::RED), tri(0.5, Rgb888::GREEN)]), Rgb888::RED);
+    assert_eq!(draw(vec![tri(0.5, Rgb888::GREEN), tri(0.5, Rgb888::RED)]), Rgb888::GREEN);
+}
+
+#[test]
+fn ram_formula_matches_size_of() {
+    fn formula(w: usize, h: usize, strip: usize, verts: usize, tris: usize, v: usize, color: usize) -> usize {
+        let bytes = w * strip * (color + 2) + verts * (16 + 4 * v) + tris * 16 + 2 * h;
+        bytes.div_ceil(4) * 4
+    }
+    assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200>>(), formula(320, 240, 16, 1000, 1200, 3, 2));
+    assert_eq!(size_of::<Renderer<Rgb565, 240, 240, 8, 600, 700, 0>>(), formula(240, 240, 8, 600, 700, 0, 2));
+    assert_eq!(size_of::<Renderer<Rgb888, 128, 64, 64, 100, 100, 4>>(), formula(128, 64, 64, 100, 100, 4, size_of::<Rgb888>()));
+    // The headline configuration: 320x240, 16-row strips.
+    assert_eq!(320 * 16 * 4, 20_480);
+}
+
+#[test]
+fn capacity_errors_are_typed_and_leave_the_frame_unchanged() {
+    let camera = demo_camera();
+    let m = Material::new(Gouraud);
+    let mut r: HostRenderer<Rgb565> = HostRenderer::new(64, 48, 16, 500, 100, Rgb565::BLACK).unwrap();
+    let mut frame = r.begin_frame(&camera, &demo_lights(), Rgb565::BLACK);
+    // The torus has 561 vertices: too many.
+    assert_eq!(frame.draw(&TORUS.mesh(), &Mat4::IDENTITY, &m), Err(DrawError::VertexCapacity { needed: 561, capacity: 500 }));
+    // The sphere's 425 vertices fit, its ~360 visible triangles do not.
+    assert_eq!(frame.draw(&SPHERE.mesh(), &Mat4::IDENTITY, &m), Err(DrawError::TriangleCapacity { capacity: 100 }));
+    assert_eq!(frame.stats(), soft3d::FrameStats::default(), "refused draws leave no trace");
+    static SMALL: MeshData<24, 36> = MeshData::cube(1.0);
+    frame.draw(&SMALL.mesh(), &Mat4::IDENTITY, &m).unwrap();
+    let mut img = Image::new(64, 48, Rgb565::BLACK);
+    let Ok(stats) = frame.finish(&mut img);
+    assert_eq!(stats.draw_calls, 1);
+    assert!(img.pixels.iter().any(|&c| c != Rgb565::BLACK), "the cube is still drawn");
+}
+
+#[test]
+fn invalid_numbers_are_skipped_and_counted() {
+    static P: [Vec3; 6] = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+        Vec3::new(f32::NAN, 0.0, 0.0),
+        Vec3::new(1.0, f32::INFINITY, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+    ];
+    static N: [Vec3; 6] = [Vec3::new(f32::NAN, 0.0, -1.0); 6];
+    static I: [u16; 6] = [0, 2, 1, 3, 5, 4];
+    let mesh = Mesh::new(&P, &N, &I).unwrap();
+    let camera = Camera::looking_at(Vec3::new(0.3, 0.3, -3.0), Vec3::new(0.3, 0.3, 0.0));
+    let mut r: HostRenderer<Rgb565> = HostRenderer::new(32, 32, 8, 64, 64, Rgb565::BLACK).unwrap();
+    let m = Material::new(Gouraud).with_cull(Cull::None);
+    let mut frame = r.begin_frame(&camera, &Lights::default(), Rgb565::BLACK);
+    frame.draw(&mesh, &Mat4::IDENTITY, &m).unwrap();
+    let mut bad = Mat4::IDENTITY;
+    bad.m[0][0] = f32::NAN;
+    frame.draw(&mesh, &bad, &m).unwrap();
+    let mut img = Image::new(32, 32, Rgb565::BLACK);
+    let Ok(stats) = frame.finish(&mut img);
+    assert_eq!(stats.invalid, 1);
+    assert_eq!(stats.meshes_invalid, 1);
+    assert_eq!(stats.queued, 1);
+    // NaN normals light with ambient only: finite colors were written.
+    assert!(img.pixels.iter().any(|&c| c != Rgb565::BLACK));
+}
