@@ -214,3 +214,27 @@ fn triangles_beyond_the_guard_band_are_clipped_without_visible_change() {
         }
     }
 }
+
+#[test]
+fn coordinates_at_and_past_every_limit_never_panic() {
+    // Exactly at the guard band, just past it, and at the ends of f64:
+    // overflow checks are on in tests, so any overflow would panic here.
+    let g4 = (1u64 << 24) as f64; // guard band at 4 sub-pixel bits, in pixels
+    let values = [0.0, 16.5, g4, -g4, g4 - 0.0625, g4 + 0.0625, 1e12, -1e12, 1e300, -1e300, f64::MAX, f64::MIN, 1e-300];
+    let mut n = 0;
+    for &a in &values {
+        for &b in &values {
+            for bits in [0, 4, 8] {
+                let tri = [tv(a, b), tv(b, 20.0), tv(10.0, a)];
+                let got = coverage(&[tri], 24, 24, 8, bits);
+                assert!(got.iter().all(|&c| c <= 1));
+                n += 1;
+            }
+        }
+    }
+    assert_eq!(n, 13 * 13 * 3);
+    // Inside the guard band the result is still exact.
+    let pts = [(-g4 + 1.0, -3.0), (g4 - 1.0, 5.5), (7.25, g4 - 1.0)];
+    let got = coverage(&[[tv(pts[0].0, pts[0].1), tv(pts[1].0, pts[1].1), tv(pts[2].0, pts[2].1)]], 24, 24, 8, 4);
+    assert_eq!(got, oracle(&pts, 24, 24, 4));
+}
