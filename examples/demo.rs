@@ -64,7 +64,7 @@ fn main() {
         recorder.save(path).unwrap_or_else(|e| fail(&format!("cannot write {path}: {e}")));
     }
     println!("rendered {frames} frames of {W}x{H} in {STRIP}-row strips (fixed-point)");
-    println!("time per frame: {:.3} ms (host wall clock; see the README for instruction counts)", busy.as_secs_f64() * 1e3 / frames as f64);
+    println!("time per frame: {:.3} ms (host wall clock)", busy.as_secs_f64() * 1e3 / frames as f64);
     println!(
         "last frame: {} draw calls, {} vertices, {} triangles submitted, {} drawn, {} back-facing",
         last.draw_calls, last.vertices, last.triangles, last.queued, last.back_facing
