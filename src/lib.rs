@@ -65,3 +65,8 @@ pub use renderer::{DrawError, Frame, FrameStats, Renderer};
 pub use renderer::{HostRenderer, SizeError};
 pub use scene::{Camera, DirectionalLight, Lights, PointLight};
 pub use settings::{FixedPoint, FloatingPoint, Precision, Settings};
+
+/// The README's examples are compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
