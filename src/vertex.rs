@@ -72,17 +72,19 @@ impl<E: Effect> VertexStage<'_, E> {
     /// Varyings of mesh vertex `i`.
     #[inline]
     pub fn varyings<const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
+        let world = if E::LIT_VERTICES { self.model.transform_point3(mesh.positions()[i]) } else { Vec3::ZERO };
+        self.varyings_at(mesh, i, world)
+    }
+
+    /// Varyings of mesh vertex `i` whose world position is known (only
+    /// used by lit effects).
+    #[inline]
+    fn varyings_at<const V: usize>(&self, mesh: &Mesh<'_>, i: usize, position: Vec3) -> [f32; V] {
         let mut out = [0.0; V];
         if E::VARYINGS == 0 {
             return out;
         }
-        let p = mesh.positions()[i];
-        let (position, normal) = if E::LIT_VERTICES {
-            let n = mesh.normals()[i];
-            (self.model.transform_point3(p), self.normal_matrix.transform(n).normalize_or_zero())
-        } else {
-            (Vec3::ZERO, Vec3::ZERO)
-        };
+        let normal = if E::LIT_VERTICES { self.normal_matrix.transform(mesh.normals()[i]).normalize_or_zero() } else { Vec3::ZERO };
         let input = VertexInput {
             position,
             normal,
@@ -97,11 +99,18 @@ impl<E: Effect> VertexStage<'_, E> {
 
     /// Transforms mesh vertex `i` into a stored vertex: projected and
     /// snapped if it is inside the near/far planes and the guard band,
-    /// otherwise flagged.
+    /// otherwise flagged. The world position is computed once, for both
+    /// the projection and the lighting.
     #[inline]
     pub fn vertex<const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        let clip = self.clip_position(mesh.positions()[i]);
-        let attrs = self.varyings(mesh, i);
+        let p = mesh.positions()[i];
+        let (clip, world) = if E::LIT_VERTICES {
+            let w = self.model.transform_point3(p);
+            (self.view_proj.transform_point(w), w)
+        } else {
+            (self.mvp.transform_point(p), Vec3::ZERO)
+        };
+        let attrs = self.varyings_at(mesh, i, world);
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }
 }

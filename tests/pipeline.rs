@@ -147,7 +147,8 @@ fn geometry_crossing_the_camera_plane_draws_only_what_is_in_front() {
     // A large floor quad under the eye extends behind the camera. The
     // oracle casts a ray through every pixel center and hits the floor in
     // front of the near plane (f64, independent of the pipeline).
-    static P: [Vec3; 4] = [Vec3::new(-20.0, -1.0, -20.0), Vec3::new(20.0, -1.0, -20.0), Vec3::new(20.0, -1.0, 20.0), Vec3::new(-20.0, -1.0, 20.0)];
+    static P: [Vec3; 4] =
+        [Vec3::new(-20.0, -1.0, -20.0), Vec3::new(20.0, -1.0, -20.0), Vec3::new(20.0, -1.0, 20.0), Vec3::new(-20.0, -1.0, 20.0)];
     static N: [Vec3; 4] = [Vec3::new(0.0, 1.0, 0.0); 4];
     static I: [u16; 6] = [0, 2, 1, 0, 3, 2];
     let mesh = Mesh::new(&P, &N, &I).unwrap();
@@ -219,7 +220,8 @@ fn lighting_does_not_change_when_mesh_and_camera_move_together() {
 fn depth_test_keeps_the_nearest_surface() {
     // Two overlapping window-space triangles: the nearer wins whatever the
     // draw order; equal depth keeps the first drawn ("less").
-    let tri = |z: f32, c: Rgb888| [(2.0, 2.0), (30.0, 4.0), (10.0, 28.0)].map(|(x, y)| soft3d::tri::TriVertex { x, y, z, w: 1.0, color: c });
+    let tri =
+        |z: f32, c: Rgb888| [(2.0, 2.0), (30.0, 4.0), (10.0, 28.0)].map(|(x, y)| soft3d::tri::TriVertex { x, y, z, w: 1.0, color: c });
     let draw = |tris: Vec<[soft3d::tri::TriVertex; 3]>| {
         let mut r: HostRenderer<Rgb888> = HostRenderer::new(32, 32, 8, 64, 64, Rgb888::BLACK).unwrap();
         let m = Material::new(VertexColor).with_cull(Cull::None);

@@ -45,7 +45,8 @@ fn render_writes_the_image_and_exact_coverage() {
     assert!(status.success());
     let img = soft3d::host::load_png(&out).unwrap();
     assert_eq!((img.width, img.height), (40, 30));
-    let counts: Vec<u8> = soft3d::host::load_png(&cov).unwrap().pixels.iter().map(|c| embedded_graphics::pixelcolor::RgbColor::r(c)).collect();
+    let counts: Vec<u8> =
+        soft3d::host::load_png(&cov).unwrap().pixels.iter().map(|c| embedded_graphics::pixelcolor::RgbColor::r(c)).collect();
     let tris: Vec<[(f64, f64); 3]> = soft3d::tri::parse(text).map(|t| t.unwrap().map(|v| (v.x, v.y))).collect();
     let mut want = vec![0u8; 40 * 30];
     for t in &tris {
@@ -63,7 +64,9 @@ fn render_rejects_malformed_files_with_the_line_number() {
         eprintln!("SKIPPED: the render example is not built (run `cargo test --features simulator`)");
         return;
     };
-    for (text, line) in [("0 0 0 1 0 0 0\n1 1 0 1 0 0 0\n\n2 2 0 0 0 0 0\n", 4), ("# c\n1 2 3\n", 2), ("0 0 0 1 0 0 0\n0 nan 0 1 0 0 0\n", 2)] {
+    for (text, line) in
+        [("0 0 0 1 0 0 0\n1 1 0 1 0 0 0\n\n2 2 0 0 0 0 0\n", 4), ("# c\n1 2 3\n", 2), ("0 0 0 1 0 0 0\n0 nan 0 1 0 0 0\n", 2)]
+    {
         let (input, out) = (tmp("bad.tri"), tmp("bad.png"));
         let _ = std::fs::remove_file(&out);
         std::fs::write(&input, text).unwrap();
