@@ -1,8 +1,6 @@
 //! End-to-end behaviour of the mesh pipeline: golden images, strips versus
 //! full frames, near-plane clipping, culling, lighting invariants, memory.
 
-mod common;
-use common::*;
 use embedded_graphics::mock_display::MockDisplay;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use soft3d::effect::{FragmentCount, Gouraud, VertexColor};

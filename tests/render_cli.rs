@@ -45,8 +45,7 @@ fn render_writes_the_image_and_exact_coverage() {
     assert!(status.success());
     let img = soft3d::host::load_png(&out).unwrap();
     assert_eq!((img.width, img.height), (40, 30));
-    let counts: Vec<u8> =
-        soft3d::host::load_png(&cov).unwrap().pixels.iter().map(|c| embedded_graphics::pixelcolor::RgbColor::r(c)).collect();
+    let counts: Vec<u8> = soft3d::host::load_png(&cov).unwrap().pixels.iter().map(embedded_graphics::pixelcolor::RgbColor::r).collect();
     let tris: Vec<[(f64, f64); 3]> = soft3d::tri::parse(text).map(|t| t.unwrap().map(|v| (v.x, v.y))).collect();
     let mut want = vec![0u8; 40 * 30];
     for t in &tris {
