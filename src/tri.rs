@@ -111,6 +111,8 @@ pub fn parse_vertex(line: &str, line_no: usize) -> Result<Option<TriVertex>, Tri
 /// Iterates over the triangles of a `.tri` text. After an error it yields
 /// nothing more.
 pub fn parse(text: &str) -> TriParser<'_> {
+    // A UTF-8 byte order mark is not part of the first line.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     TriParser { lines: text.lines().enumerate(), done: false }
 }
 
@@ -169,6 +171,13 @@ mod tests {
         assert_eq!(tris[0][1].x, 10.5);
         assert_eq!(tris[0][2].w, 2.0);
         assert_eq!(tris[0][2].color, Rgb888::new(0, 0, 255));
+    }
+
+    #[test]
+    fn accepts_crlf_and_a_byte_order_mark() {
+        let tris: std::vec::Vec<_> = parse("\u{feff}0 0 0 1 1 2 3\r\n1 0 0 1 1 2 3\r\n0 1 0 1 1 2 3\r\n").collect();
+        assert_eq!(tris.len(), 1);
+        assert!(tris[0].is_ok());
     }
 
     #[test]

@@ -238,3 +238,21 @@ fn coordinates_at_and_past_every_limit_never_panic() {
     let got = coverage(&[[tv(pts[0].0, pts[0].1), tv(pts[1].0, pts[1].1), tv(pts[2].0, pts[2].1)]], 24, 24, 8, 4);
     assert_eq!(got, oracle(&pts, 24, 24, 4));
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(400))]
+    /// Property form of the oracle comparison: shrinks a failure to a
+    /// minimal triangle. Coordinates are on the 1/16 grid.
+    #[test]
+    fn any_grid_triangle_matches_the_oracle(
+        c in proptest::array::uniform6(-320i32..1100),
+        strip in 1usize..41,
+        float in proptest::bool::ANY,
+    ) {
+        let pts = [0, 1, 2].map(|i| (c[2 * i] as f64 / 16.0, c[2 * i + 1] as f64 / 16.0));
+        let tri = [tv(pts[0].0, pts[0].1), tv(pts[1].0, pts[1].1), tv(pts[2].0, pts[2].1)];
+        let got = coverage_mode(&[tri], W, H, strip, 4, float);
+        let want = oracle(&pts, W, H, 4);
+        proptest::prop_assert_eq!(&got, &want, "{:?}: {}", pts, diff(&got, &want, W));
+    }
+}
