@@ -8,7 +8,9 @@ use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, to
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, DirectionalLight, Lights, PointLight};
 use crate::settings::Settings;
-use embedded_graphics::pixelcolor::{PixelColor, Rgb888};
+use embedded_graphics::pixelcolor::{IntoStorage, PixelColor, Rgb888};
+use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Pixel, Size};
+use embedded_graphics::primitives::Rectangle;
 
 /// A torus, 32 × 16 segments (561 vertices, 1,024 triangles).
 pub static TORUS: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
@@ -57,4 +59,68 @@ where
     frame.draw(&CUBE.mesh(), &cube, &BLUE)?;
     let sphere = Mat4::translation(Vec3::new(2.4, 0.2 * crate::math::sin(t * 2.0), 0.5)) * Mat4::rotation_y(t);
     frame.draw(&SPHERE.mesh(), &sphere, &GREEN)
+}
+
+/// Names of the benchmark scenes, in the order [`draw_bench`] takes them.
+pub const BENCH_SCENES: [&str; 3] = ["torus", "demo-t0", "demo-t1.7"];
+
+/// Draws benchmark scene `index` (see [`BENCH_SCENES`]) with the demo's
+/// camera and lights: the generated torus alone, or the demo scene at two
+/// moments. Out-of-range indices draw nothing.
+pub fn draw_bench<C, const V: usize, S>(frame: &mut Frame<'_, '_, C, V, S>, index: usize) -> Result<(), DrawError>
+where
+    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    S: Settings,
+{
+    match index {
+        0 => frame.draw(&TORUS.mesh(), &(Mat4::rotation_y(0.4) * Mat4::rotation_x(0.6)), &ORANGE),
+        1 => draw_demo(frame, 0.0),
+        2 => draw_demo(frame, 1.7),
+        _ => Ok(()),
+    }
+}
+
+/// A `DrawTarget` that only folds every pixel it receives into a 32-bit
+/// FNV-1a checksum of the raw color values, so host and target frames can
+/// be compared without storing them.
+pub struct FrameChecksum<C> {
+    size: Size,
+    /// The checksum so far.
+    pub sum: u32,
+    _color: core::marker::PhantomData<C>,
+}
+
+impl<C> FrameChecksum<C> {
+    /// A checksum target of the given size.
+    pub const fn new(width: u32, height: u32) -> Self {
+        Self { size: Size::new(width, height), sum: 0x811c_9dc5, _color: core::marker::PhantomData }
+    }
+}
+
+impl<C: PixelColor> OriginDimensions for FrameChecksum<C> {
+    fn size(&self) -> Size {
+        self.size
+    }
+}
+
+impl<C: PixelColor + IntoStorage> DrawTarget for FrameChecksum<C>
+where
+    C::Storage: Into<u32>,
+{
+    type Color = C;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
+        for Pixel(_, c) in pixels {
+            self.sum = (self.sum ^ c.into_storage().into()).wrapping_mul(0x0100_0193);
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = C>>(&mut self, _: &Rectangle, colors: I) -> Result<(), Self::Error> {
+        for c in colors {
+            self.sum = (self.sum ^ c.into_storage().into()).wrapping_mul(0x0100_0193);
+        }
+        Ok(())
+    }
 }
