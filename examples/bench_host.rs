@@ -8,7 +8,8 @@ use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_
 use soft3d::{HostRenderer, Settings};
 
 fn run<S: Settings>(mode: &str) {
-    let mut r: HostRenderer<Rgb565, 3, S> = HostRenderer::new(320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).expect("valid sizes");
+    let mut r: HostRenderer<Rgb565, 3, S> =
+        HostRenderer::new(320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).expect("valid sizes");
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
         draw_bench(&mut frame, i).expect("the scene fits its buffers");
