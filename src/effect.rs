@@ -8,7 +8,7 @@
 //! effect that no draw call uses is not in the binary.
 
 use crate::math::{Interp, Vec2, Vec3};
-use crate::scene::Lights;
+use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 /// Most varyings any effect may ask for.
@@ -51,9 +51,9 @@ pub trait Effect: Copy + 'static {
     const NAME: &'static str;
 
     /// Varyings of one vertex.
-    fn vertex(&self, v: &VertexInput, lights: &Lights) -> [f32; MAX_VARYINGS];
+    fn vertex(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS];
     /// The per-triangle color.
-    fn face(&self, f: &FaceInput, lights: &Lights) -> Rgb888;
+    fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888;
     /// The color of a pixel from the triangle's color (converted once per
     /// triangle), the interpolated varyings and the color already there
     /// (for effects that blend; the others ignore it and the load is
@@ -95,10 +95,10 @@ impl Effect for Flat {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = true;
     const NAME: &'static str = "flat";
-    fn vertex(&self, _: &VertexInput, _: &Lights) -> [f32; MAX_VARYINGS] {
+    fn vertex(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
     }
-    fn face(&self, f: &FaceInput, lights: &Lights) -> Rgb888 {
+    fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888 {
         to_rgb888(lit(lights.diffuse(f.position, f.normal), f.color))
     }
     #[inline(always)]
@@ -116,10 +116,10 @@ impl Effect for Gouraud {
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
     const NAME: &'static str = "gouraud";
-    fn vertex(&self, v: &VertexInput, lights: &Lights) -> [f32; MAX_VARYINGS] {
+    fn vertex(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
         rgb_varyings(lit(lights.diffuse(v.position, v.normal), v.color))
     }
-    fn face(&self, _: &FaceInput, _: &Lights) -> Rgb888 {
+    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
     }
     #[inline(always)]
@@ -138,10 +138,10 @@ impl Effect for VertexColor {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
     const NAME: &'static str = "unlit";
-    fn vertex(&self, v: &VertexInput, _: &Lights) -> [f32; MAX_VARYINGS] {
+    fn vertex(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         rgb_varyings([v.color.r() as f32, v.color.g() as f32, v.color.b() as f32])
     }
-    fn face(&self, _: &FaceInput, _: &Lights) -> Rgb888 {
+    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
     }
     #[inline(always)]
@@ -163,10 +163,10 @@ impl Effect for FragmentCount {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
     const NAME: &'static str = "count";
-    fn vertex(&self, _: &VertexInput, _: &Lights) -> [f32; MAX_VARYINGS] {
+    fn vertex(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
     }
-    fn face(&self, _: &FaceInput, _: &Lights) -> Rgb888 {
+    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
     }
     #[inline(always)]

@@ -25,7 +25,7 @@ use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::Mesh;
 use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget, DEPTH_CLEAR, GUARD};
-use crate::scene::{Camera, Lights};
+use crate::scene::{Camera, Lighting, Lights};
 use crate::settings::{FixedPoint, Settings};
 use crate::tri::TriVertex;
 use crate::vertex::{self, VertexStage};
@@ -329,7 +329,7 @@ pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
     n_triangles: usize,
     draws: Vec<(&'m dyn MaterialProgram<C, S, V>, u16), MAX_DRAW_CALLS>,
     view_proj: Mat4,
-    lights: Lights,
+    lights: Lighting,
     background: C,
     stats: FrameStats,
 }
@@ -343,7 +343,16 @@ where
     S: Settings,
 {
     fn new(b: Buffers<'r, C, V>, view_proj: Mat4, lights: &Lights, background: C) -> Self {
-        Self { b, n_vertices: 0, n_triangles: 0, draws: Vec::new(), view_proj, lights: *lights, background, stats: FrameStats::default() }
+        Self {
+            b,
+            n_vertices: 0,
+            n_triangles: 0,
+            draws: Vec::new(),
+            view_proj,
+            lights: Lighting::new(lights),
+            background,
+            stats: FrameStats::default(),
+        }
     }
 
     /// Appends a vertex, or reports the buffer full.
@@ -450,7 +459,7 @@ where
         let base = self.n_vertices;
         let snapshot = self.stats;
         self.begin_draw(material)?;
-        let lights = Lights::UNLIT;
+        let lights = Lighting::UNLIT;
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {
                 let input = VertexInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: v.color, uv: Vec2::new(0.0, 0.0) };

@@ -83,6 +83,36 @@ impl Lights {
 
     /// Diffuse light reaching a point with the given (unit) normal.
     /// Every term is finite for finite inputs; a zero normal gets ambient only.
+    pub fn diffuse(&self, position: Vec3, normal: Vec3) -> Vec3 {
+        Lighting::new(self).diffuse(position, normal)
+    }
+}
+
+/// [`Lights`] prepared once per frame for the vertex stage: the
+/// directional light's direction is normalized here, not per vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lighting {
+    ambient: Vec3,
+    point: Option<PointLight>,
+    /// Unit direction toward the directional light, and its color.
+    sun: Option<(Vec3, Vec3)>,
+}
+
+impl Lighting {
+    /// Full ambient and no light sources.
+    pub const UNLIT: Self = Self { ambient: Vec3::ONE, point: None, sun: None };
+
+    /// Prepares `lights`.
+    pub fn new(lights: &Lights) -> Self {
+        Self {
+            ambient: lights.ambient,
+            point: lights.point,
+            sun: lights.directional.map(|d| ((-d.direction).normalize_or_zero(), d.color)),
+        }
+    }
+
+    /// Diffuse light reaching a point with the given (unit) normal:
+    /// `ambient + Σ color_i · clamp(n · l_i, 0, 1)`.
     #[inline]
     pub fn diffuse(&self, position: Vec3, normal: Vec3) -> Vec3 {
         let mut light = self.ambient;
@@ -90,9 +120,8 @@ impl Lights {
             let l = (p.position - position).normalize_or_zero();
             light = light + p.color * clamp01(normal.dot(l));
         }
-        if let Some(d) = self.directional {
-            let l = (-d.direction).normalize_or_zero();
-            light = light + d.color * clamp01(normal.dot(l));
+        if let Some((l, color)) = self.sun {
+            light = light + color * clamp01(normal.dot(l));
         }
         light
     }

@@ -7,7 +7,7 @@ use crate::effect::{Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::raster::{snap, ScreenVertex};
-use crate::scene::Lights;
+use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::Rgb888;
 
 /// Vertex outside the near plane (in front of it is inside).
@@ -43,7 +43,7 @@ pub struct VertexStage<'a, E> {
     /// Normal matrix of the model.
     pub normal_matrix: Mat3,
     /// Lights of the frame.
-    pub lights: &'a Lights,
+    pub lights: &'a Lighting,
     /// Effect of the material.
     pub effect: &'a E,
     /// Material color, for meshes without vertex colors.

@@ -63,10 +63,11 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str, sink: u32) {
         timer.start();
         let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
         let _ = draw_bench(&mut frame, i);
+        let geometry = timer.instructions();
         let Ok(stats) = frame.finish(&mut out);
-        match timer.instructions() {
-            Some(n) => hprintln!("{},{},{},{},{},{},{:08x}", name, mode, TARGET, n, sink, stats.queued, out.sum),
-            None => hprintln!("{},{},{},overflow,{},{},{:08x}", name, mode, TARGET, sink, stats.queued, out.sum),
+        match (timer.instructions(), geometry) {
+            (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{}", name, mode, TARGET, n, sink, stats.queued, out.sum, g),
+            _ => hprintln!("{},{},{},overflow,{},{},{:08x},0", name, mode, TARGET, sink, stats.queued, out.sum),
         }
     }
 }
@@ -80,7 +81,7 @@ fn main() -> ! {
     syst.enable_counter();
     let mut timer = Timer(syst);
     let sink = sink_cost(&mut timer).unwrap_or(0);
-    hprintln!("scene,mode,target,instructions,sink_instructions,queued,checksum");
+    hprintln!("scene,mode,target,instructions,sink_instructions,queued,checksum,geometry_instructions");
     run::<soft3d::FixedPoint>(&mut timer, "fixed", sink);
     run::<soft3d::FloatingPoint>(&mut timer, "f32", sink);
     debug::exit(debug::EXIT_SUCCESS);
