@@ -61,6 +61,19 @@ pub trait Effect: Copy + 'static {
     fn shade<C: From<Rgb888> + Into<Rgb888> + Copy, S: Interp>(face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
 }
 
+/// The first `V` varyings `effect` computes for one vertex (the renderer
+/// stores `V` per vertex; `V >= E::VARYINGS` is checked at compile time).
+#[inline]
+pub(crate) fn vertex_varyings<E: Effect, const V: usize>(effect: &E, input: &VertexInput, lights: &Lighting) -> [f32; V] {
+    let mut out = [0.0; V];
+    if E::VARYINGS > 0 {
+        let all = effect.vertex(input, lights);
+        let n = V.min(all.len());
+        out[..n].copy_from_slice(&all[..n]);
+    }
+    out
+}
+
 /// Light times color, per channel, clamped to [0, 255]. Varyings carry an
 /// extra 0.5 so that the span loop's `floor` rounds to nearest.
 #[inline]

@@ -20,7 +20,7 @@
 //! draw-call slot ([`MAX_DRAW_CALLS`]) on the stack while it is recorded.
 
 use crate::clip::{self, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
-use crate::effect::{Effect, FaceInput, VertexInput};
+use crate::effect::{vertex_varyings, Effect, FaceInput, VertexInput};
 use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::Mesh;
@@ -463,11 +463,7 @@ where
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {
                 let input = VertexInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: v.color, uv: Vec2::new(0.0, 0.0) };
-                let all = material.effect.vertex(&input, &lights);
-                let mut out = [0.0; V];
-                let n = V.min(all.len());
-                out[..n].copy_from_slice(&all[..n]);
-                out
+                vertex_varyings(&material.effect, &input, &lights)
             };
             let face = if E::USES_FACE {
                 material.effect.face(&FaceInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: tri[0].color }, &lights)

@@ -3,7 +3,7 @@
 //! projection of visible vertices to snapped window coordinates.
 
 use crate::clip::{to_window, ClipVertex};
-use crate::effect::{Effect, VertexInput};
+use crate::effect::{vertex_varyings, Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::raster::{snap, ScreenVertex};
@@ -80,9 +80,8 @@ impl<E: Effect> VertexStage<'_, E> {
     /// used by lit effects).
     #[inline]
     fn varyings_at<const V: usize>(&self, mesh: &Mesh<'_>, i: usize, position: Vec3) -> [f32; V] {
-        let mut out = [0.0; V];
         if E::VARYINGS == 0 {
-            return out;
+            return [0.0; V];
         }
         let normal = if E::LIT_VERTICES { self.normal_matrix.transform(mesh.normals()[i]).normalize_or_zero() } else { Vec3::ZERO };
         let input = VertexInput {
@@ -91,10 +90,7 @@ impl<E: Effect> VertexStage<'_, E> {
             color: mesh.colors().map_or(self.color, |c| c[i]),
             uv: mesh.uvs().map_or(Vec2::new(0.0, 0.0), |u| u[i]),
         };
-        let v = self.effect.vertex(&input, self.lights);
-        let n = V.min(v.len());
-        out[..n].copy_from_slice(&v[..n]);
-        out
+        vertex_varyings(self.effect, &input, self.lights)
     }
 
     /// Transforms mesh vertex `i` into a stored vertex: projected and

@@ -11,7 +11,6 @@ const H: usize = 40;
 #[test]
 fn random_triangles_match_the_oracle_at_every_subpixel_setting() {
     let mut rng = Rng(0x5eed_1234_abcd_0001);
-    let mut checked = 0;
     for bits in [0u32, 1, 2, 4, 6, 8] {
         for n in 0..700 {
             // Coarse grids put many pixel centers exactly on edges.
@@ -22,10 +21,8 @@ fn random_triangles_match_the_oracle_at_every_subpixel_setting() {
             let got = coverage_mode(&[tri], W, H, strip, bits, n % 2 == 1);
             let want = oracle(&pts, W, H, bits);
             assert_eq!(got, want, "bits {bits}, triangle {pts:?}, strip {strip}: {}", diff(&got, &want, W));
-            checked += 1;
         }
     }
-    assert_eq!(checked, 4200);
 }
 
 #[test]
@@ -221,18 +218,15 @@ fn coordinates_at_and_past_every_limit_never_panic() {
     // overflow checks are on in tests, so any overflow would panic here.
     let g4 = (1u64 << 24) as f64; // guard band at 4 sub-pixel bits, in pixels
     let values = [0.0, 16.5, g4, -g4, g4 - 0.0625, g4 + 0.0625, 1e12, -1e12, 1e300, -1e300, f64::MAX, f64::MIN, 1e-300];
-    let mut n = 0;
     for &a in &values {
         for &b in &values {
             for bits in [0, 4, 8] {
                 let tri = [tv(a, b), tv(b, 20.0), tv(10.0, a)];
                 let got = coverage(&[tri], 24, 24, 8, bits);
                 assert!(got.iter().all(|&c| c <= 1));
-                n += 1;
             }
         }
     }
-    assert_eq!(n, 13 * 13 * 3);
     // Inside the guard band the result is still exact.
     let pts = [(-g4 + 1.0, -3.0), (g4 - 1.0, 5.5), (7.25, g4 - 1.0)];
     let got = coverage(&[[tv(pts[0].0, pts[0].1), tv(pts[1].0, pts[1].1), tv(pts[2].0, pts[2].1)]], 24, 24, 8, 4);
