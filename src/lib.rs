@@ -44,6 +44,8 @@
 #[cfg(any(feature = "std", test))]
 extern crate std;
 
+#[cfg(feature = "babylon")]
+pub mod babylon;
 pub mod clip;
 pub mod effect;
 #[cfg(feature = "simulator")]

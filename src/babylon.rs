@@ -1,0 +1,1 @@
+//! The `.babylon` scene loader (placeholder, being written).
