@@ -11,8 +11,38 @@ use crate::math::{Interp, Vec2, Vec3};
 use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
+/// The color types the renderer draws in: the RGB colors of
+/// `embedded-graphics` (`Rgb565`, `Bgr565`, `Rgb555`, `Bgr555`, `Rgb666`,
+/// `Bgr666`, `Rgb888`, `Bgr888`). Effects interpolate channels in the
+/// display's own depth (0 to `MAX_R` etc.), so a pixel is built from its
+/// channels with no conversion.
+pub trait Color: RgbColor + From<Rgb888> {
+    /// The color with these channels, each at most `MAX_R`, `MAX_G`,
+    /// `MAX_B` (higher bits are dropped).
+    fn from_channels(r: u8, g: u8, b: u8) -> Self;
+}
+
+macro_rules! impl_color {
+    ($($t:ident),*) => {$(
+        impl Color for embedded_graphics::pixelcolor::$t {
+            #[inline(always)]
+            fn from_channels(r: u8, g: u8, b: u8) -> Self {
+                Self::new(r, g, b)
+            }
+        }
+    )*};
+}
+
+impl_color!(Rgb565, Bgr565, Rgb555, Bgr555, Rgb666, Bgr666, Rgb888, Bgr888);
+
 /// Most varyings any effect may ask for.
 pub const MAX_VARYINGS: usize = 4;
+
+/// The range of a color-channel varying whose channel is at most `max`:
+/// its integer part is the channel.
+pub const fn channel_range(max: u8) -> (f32, f32) {
+    (0.0, max as f32 + 0.996)
+}
 
 /// Per-vertex input to an effect (world space).
 #[derive(Clone, Copy, Debug)]
@@ -50,41 +80,52 @@ pub trait Effect: Copy + 'static {
     /// Name for reports.
     const NAME: &'static str;
 
-    /// Varyings of one vertex.
-    fn vertex(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS];
+    /// The range each varying must stay in at every pixel (inclusive).
+    /// The rasterizer guarantees it: with a wrapping scalar it checks each
+    /// triangle's planes and, where rounding could leave the range, clamps
+    /// the ends of every span. The default: red, green, blue channels of `C`.
+    fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
+        [channel_range(C::MAX_R), channel_range(C::MAX_G), channel_range(C::MAX_B), (0.0, 0.0)]
+    }
+
+    /// Varyings of one vertex, for display color type `C`.
+    fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS];
     /// The per-triangle color.
     fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888;
     /// The color of a pixel from the triangle's color (converted once per
     /// triangle), the interpolated varyings and the color already there
     /// (for effects that blend; the others ignore it and the load is
     /// optimized away).
-    fn shade<C: From<Rgb888> + Into<Rgb888> + Copy, S: Interp>(face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
+    fn shade<C: Color, S: Interp>(face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
 }
 
 /// The first `V` varyings `effect` computes for one vertex (the renderer
 /// stores `V` per vertex; `V >= E::VARYINGS` is checked at compile time).
 #[inline]
-pub(crate) fn vertex_varyings<E: Effect, const V: usize>(effect: &E, input: &VertexInput, lights: &Lighting) -> [f32; V] {
+pub(crate) fn vertex_varyings<C: Color, E: Effect, const V: usize>(effect: &E, input: &VertexInput, lights: &Lighting) -> [f32; V] {
     let mut out = [0.0; V];
     if E::VARYINGS > 0 {
-        let all = effect.vertex(input, lights);
+        let all = effect.vertex::<C>(input, lights);
         let n = V.min(all.len());
         out[..n].copy_from_slice(&all[..n]);
     }
     out
 }
 
-/// Light times color, per channel, clamped to [0, 255]. Varyings carry an
-/// extra 0.5 so that the span loop's `floor` rounds to nearest.
+/// Light times color, per channel, clamped to [0, 255].
 #[inline]
 fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
     let ch = |l: f32, v: u8| crate::scene::clamp01(l) * v as f32;
     [ch(light.x, c.r()), ch(light.y, c.g()), ch(light.z, c.b())]
 }
 
+/// Channels in [0, 255] as varyings in the depth of `C`. They carry an
+/// extra 0.5 so that the span loop's truncation rounds to nearest, as
+/// `embedded-graphics` does when it converts colors.
 #[inline]
-fn rgb_varyings(c: [f32; 3]) -> [f32; MAX_VARYINGS] {
-    [c[0] + 0.5, c[1] + 0.5, c[2] + 0.5, 0.0]
+fn rgb_varyings<C: Color>(c: [f32; 3]) -> [f32; MAX_VARYINGS] {
+    let scale = |v: f32, max: u8| v * (max as f32 * (1.0 / 255.0)) + 0.5;
+    [scale(c[0], C::MAX_R), scale(c[1], C::MAX_G), scale(c[2], C::MAX_B), 0.0]
 }
 
 #[inline]
@@ -93,10 +134,9 @@ fn to_rgb888(c: [f32; 3]) -> Rgb888 {
     Rgb888::new((c[0] + 0.5) as u8, (c[1] + 0.5) as u8, (c[2] + 0.5) as u8)
 }
 
-#[inline]
-fn shade_rgb<C: From<Rgb888>, S: Interp>(v: &[S; MAX_VARYINGS]) -> C {
-    let ch = |s: S| s.quantize(0, 255) as u8;
-    C::from(Rgb888::new(ch(v[0]), ch(v[1]), ch(v[2])))
+#[inline(always)]
+fn shade_rgb<C: Color, S: Interp>(v: &[S; MAX_VARYINGS]) -> C {
+    C::from_channels(v[0].channel(), v[1].channel(), v[2].channel())
 }
 
 /// Flat shading: one N·L per triangle from its geometric normal.
@@ -108,14 +148,14 @@ impl Effect for Flat {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = true;
     const NAME: &'static str = "flat";
-    fn vertex(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+    fn vertex<C: Color>(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
     }
     fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888 {
         to_rgb888(lit(lights.diffuse(f.position, f.normal), f.color))
     }
     #[inline(always)]
-    fn shade<C: From<Rgb888> + Into<Rgb888> + Copy, S: Interp>(face: C, _: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(face: C, _: &[S; MAX_VARYINGS], _: C) -> C {
         face
     }
 }
@@ -129,14 +169,14 @@ impl Effect for Gouraud {
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
     const NAME: &'static str = "gouraud";
-    fn vertex(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
-        rgb_varyings(lit(lights.diffuse(v.position, v.normal), v.color))
+    fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
+        rgb_varyings::<C>(lit(lights.diffuse(v.position, v.normal), v.color))
     }
     fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: From<Rgb888> + Into<Rgb888> + Copy, S: Interp>(_: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(_: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
     }
 }
@@ -151,20 +191,20 @@ impl Effect for VertexColor {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
     const NAME: &'static str = "unlit";
-    fn vertex(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
-        rgb_varyings([v.color.r() as f32, v.color.g() as f32, v.color.b() as f32])
+    fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+        rgb_varyings::<C>([v.color.r() as f32, v.color.g() as f32, v.color.b() as f32])
     }
     fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: From<Rgb888> + Into<Rgb888> + Copy, S: Interp>(_: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(_: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
     }
 }
 
 /// A diagnostic effect: adds one to every channel of the pixel per
-/// fragment (saturating at 255), so that the image counts how many
+/// fragment (saturating at the channel's maximum), so that the image counts how many
 /// fragments covered each pixel. Use it with [`DepthOff`](crate::material::DepthOff)
 /// and an 8-bit-per-channel color type to count fragments before the depth
 /// test, or to find overdraw.
@@ -176,15 +216,15 @@ impl Effect for FragmentCount {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
     const NAME: &'static str = "count";
-    fn vertex(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+    fn vertex<C: Color>(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
     }
     fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: From<Rgb888> + Into<Rgb888> + Copy, S: Interp>(_: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
-        let d: Rgb888 = dst.into();
-        C::from(Rgb888::new(d.r().saturating_add(1), d.g().saturating_add(1), d.b().saturating_add(1)))
+    fn shade<C: Color, S: Interp>(_: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
+        let up = |v: u8, max: u8| if v < max { v + 1 } else { max };
+        C::from_channels(up(dst.r(), C::MAX_R), up(dst.g(), C::MAX_G), up(dst.b(), C::MAX_B))
     }
 }

@@ -19,10 +19,9 @@
 //! once per triangle in `f32`, then stepped with one addition per pixel in
 //! the renderer's [`Interp`] scalar.
 
-use crate::effect::{Effect, MAX_VARYINGS};
+use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
 use crate::math::Interp;
-use embedded_graphics::pixelcolor::Rgb888;
 
 /// Largest magnitude of a snapped coordinate, in units of `2^-F` pixels.
 ///
@@ -32,10 +31,10 @@ use embedded_graphics::pixelcolor::Rgb888;
 /// pixels at 4 sub-pixel bits, 1 million at 8.
 pub const GUARD: i32 = 1 << 29;
 
-/// Depth values are stepped as `z * 2^DEPTH_PRESHIFT` so that the
-/// fixed-point scalar keeps 24 bits of depth below the point; the stored
-/// 16-bit depth is `floor(z * 65536)`.
-const DEPTH_PRESHIFT: f32 = 256.0;
+/// Depth in [0, 1] maps to stored depth `floor(z * DEPTH_RANGE + 0.5)`:
+/// 0 to 65534, so that nothing drawn ever equals [`DEPTH_CLEAR`], and the
+/// half unit of margin absorbs interpolation rounding at the vertices.
+const DEPTH_RANGE: f32 = 65534.0;
 
 /// Cleared depth value (farther than anything drawable).
 pub const DEPTH_CLEAR: u16 = u16::MAX;
@@ -194,6 +193,76 @@ pub struct StripTarget<'a, C> {
     pub y0: i32,
     /// Rows in the strip.
     pub rows: i32,
+    /// Columns written so far, `dirty.0..dirty.1` (empty if `0 >= 1`), so
+    /// that only they need clearing for the next strip.
+    pub dirty: (usize, usize),
+}
+
+/// One interpolated quantity of a triangle: its value at the top vertex,
+/// its gradients per pixel, and the range it must stay in.
+#[derive(Clone, Copy)]
+struct Plane<S> {
+    at_a: S,
+    dx: S,
+    dy: S,
+    lo: S,
+    hi: S,
+}
+
+impl<S: Interp> Plane<S> {
+    /// The plane through three vertex values, `d` being the triangle's
+    /// shape relative to its top vertex (see [`Shape`]).
+    #[inline(always)]
+    fn new(shape: &Shape, va: f32, vb: f32, vc: f32, (lo, hi): (f32, f32)) -> Self {
+        let (d1, d2) = (vb - va, vc - va);
+        let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
+        let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
+        Self { at_a: S::from_f32(va), dx: S::from_f32(dx), dy: S::from_f32(dy), lo: S::from_f32(lo), hi: S::from_f32(hi) }
+    }
+
+    /// Value at an offset from the top vertex, in units of `2^-f` pixels.
+    #[inline(always)]
+    fn at(&self, ox: i32, oy: i32, f: u32) -> S {
+        S::plane_at(self.at_a, self.dx, self.dy, ox, oy, f)
+    }
+
+    /// Whether every pixel of the triangle gets a value within range when
+    /// stepped: the plane is linear, so it suffices that its values at the
+    /// three vertices are.
+    #[inline(always)]
+    fn safe(&self, shape: &Shape, f: u32) -> bool {
+        let within = |ox, oy| S::plane_within(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi);
+        within(0, 0) && within(shape.ox1, shape.oy1) && within(shape.ox2, shape.oy2)
+    }
+
+    /// Start value and step of a span of `len` pixels whose first pixel
+    /// center is at offset `(ox, oy)`: both ends clamped into range, the
+    /// values in between interpolated (the careful path).
+    #[inline(always)]
+    fn clamped_span(&self, ox: i32, oy: i32, len: i32, f: u32) -> (S, S) {
+        let start = S::plane_clamped(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi);
+        if len < 2 {
+            return (start, self.dx);
+        }
+        let end = S::plane_clamped(self.at_a, self.dx, self.dy, ox + ((len - 1) << f), oy, f, self.lo, self.hi);
+        (start, end.sub(start).div_int(len - 1))
+    }
+}
+
+/// A triangle's edge vectors from its top vertex, for plane setup.
+struct Shape {
+    /// `b - a` and `c - a` in pixels.
+    x1: f32,
+    y1: f32,
+    x2: f32,
+    y2: f32,
+    /// `1 / ((b - a) × (c - a))` in 1/pixels².
+    inv_area: f32,
+    /// `b - a` and `c - a` in units of `2^-f` pixels.
+    ox1: i32,
+    oy1: i32,
+    ox2: i32,
+    oy2: i32,
 }
 
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
@@ -201,11 +270,10 @@ pub struct StripTarget<'a, C> {
 ///
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
-#[allow(clippy::too_many_arguments)]
 #[inline(never)]
 pub fn rasterize<C, S, E, P, D, const V: usize>(target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, subpixel_bits: u32)
 where
-    C: From<Rgb888> + Into<Rgb888> + Copy,
+    C: Color,
     S: Interp,
     E: Effect,
     P: Perspective,
@@ -238,27 +306,18 @@ where
     if y_start >= y_end {
         return;
     }
-    let width = target.width as i64;
+    let width = target.width as i32;
 
-    // Plane equations, relative to vertex a, in pixels.
-    let inv_f = 1.0 / (1u32 << f) as f32;
-    let (x1, y1) = ((b.x as i64 - a.x as i64) as f32 * inv_f, (b.y as i64 - a.y as i64) as f32 * inv_f);
-    let (x2, y2) = ((c.x as i64 - a.x as i64) as f32 * inv_f, (c.y as i64 - a.y as i64) as f32 * inv_f);
-    let inv_det = 1.0 / (area as f32 * inv_f * inv_f);
-    // Base point: center of the leftmost on-screen pixel of the bounding box
-    // on the first row, so offsets stay small.
-    let min_x = a.x.min(b.x).min(c.x);
-    let x_base = ((min_x as i64) >> f).clamp(0, width - 1) as i32;
-    let ox = (x_base as f32 + 0.5) - a.x as f32 * inv_f;
-    let oy = (y_start as f32 + 0.5) - a.y as f32 * inv_f;
-    let plane = |v0: f32, v1: f32, v2: f32| -> (S, S, S) {
-        let (d1, d2) = (v1 - v0, v2 - v0);
-        let gx = (d1 * y2 - d2 * y1) * inv_det;
-        let gy = (d2 * x1 - d1 * x2) * inv_det;
-        (S::from_f32(v0 + gx * ox + gy * oy), S::from_f32(gx), S::from_f32(gy))
-    };
+    // Plane setup relative to the top vertex. Snapped coordinates are
+    // within ±2^29, so their differences fit i32.
+    let (ox1, oy1, ox2, oy2) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+    let unit = 1.0 / (1u32 << f) as f32;
+    let (x1, y1, x2, y2) = (ox1 as f32 * unit, oy1 as f32 * unit, ox2 as f32 * unit, oy2 as f32 * unit);
+    let shape = Shape { x1, y1, x2, y2, inv_area: 1.0 / (x1 * y2 - y1 * x2), ox1, oy1, ox2, oy2 };
 
-    let (mut z_row, z_dx, z_dy) = plane(a.z * DEPTH_PRESHIFT, b.z * DEPTH_PRESHIFT, c.z * DEPTH_PRESHIFT);
+    let depth_range = (0.0, (DEPTH_RANGE + 0.999) * S::DEPTH_SCALE);
+    let depth = |v: &ScreenVertex<V>| (v.z * DEPTH_RANGE + 0.5) * S::DEPTH_SCALE;
+    let z = Plane::<S>::new(&shape, depth(a), depth(b), depth(c), depth_range);
     // Perspective-correct varyings are interpolated as value * q', with
     // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
     let (qa, qb, qc) = if P::CORRECT {
@@ -268,12 +327,41 @@ where
     } else {
         (1.0, 1.0, 1.0)
     };
-    let (mut q_row, q_dx, q_dy) = if P::CORRECT { plane(qa, qb, qc) } else { (S::default(), S::default(), S::default()) };
+    let q = if P::CORRECT {
+        Plane::<S>::new(&shape, qa, qb, qc, (1.0 / 65536.0, 1.0))
+    } else {
+        let (one, zero) = (S::from_f32(1.0), S::default());
+        Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one }
+    };
+    let n = E::VARYINGS.min(V);
+    let mut vary = [z; MAX_VARYINGS];
+    let ranges = E::ranges::<C>();
+    for (i, p) in vary.iter_mut().enumerate().take(n) {
+        *p = Plane::new(&shape, a.attrs[i] * qa, b.attrs[i] * qb, c.attrs[i] * qc, ranges[i]);
+    }
+    // With a wrapping scalar, a plane whose rounded gradients leave its
+    // range at a vertex takes the careful path (clamped span ends).
+    let careful = S::WRAPS && {
+        let mut ok = !(D::TEST || D::WRITE) || z.safe(&shape, f);
+        ok &= !P::CORRECT || q.safe(&shape, f);
+        for p in &vary[..n] {
+            ok &= p.safe(&shape, f);
+        }
+        !ok
+    };
+
+    // Stepping origin: the center of the strip's first row at the leftmost
+    // on-screen column of the bounding box.
+    let min_x = a.x.min(b.x).min(c.x);
+    let x_base = (min_x >> f).clamp(0, width - 1);
+    let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_start << f) + (1 << (f - 1)) - a.y);
+    let mut z_row = z.at(ox, oy, f);
+    let mut q_row = q.at(ox, oy, f);
     let mut v_row = [S::default(); MAX_VARYINGS];
     let mut v_dx = [S::default(); MAX_VARYINGS];
-    let mut v_dy = [S::default(); MAX_VARYINGS];
-    for i in 0..E::VARYINGS.min(V) {
-        (v_row[i], v_dx[i], v_dy[i]) = plane(a.attrs[i] * qa, b.attrs[i] * qb, c.attrs[i] * qc);
+    for i in 0..n {
+        v_row[i] = vary[i].at(ox, oy, f);
+        v_dx[i] = vary[i].dx;
     }
 
     let mut long = EdgeWalker::new(a.x, a.y, c.x, c.y, y_start, f);
@@ -285,41 +373,49 @@ where
             short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, f);
         }
         let (left, right) = if mid_left { (&short, &long) } else { (&long, &short) };
-        let x0 = left.bound.clamp(0, width) as usize;
-        let x1 = right.bound.clamp(0, width) as usize;
+        let x0 = left.bound.clamp(0, width as i64) as i32;
+        let x1 = right.bound.clamp(0, width as i64) as i32;
         if x0 < x1 {
             let row = (y - target.y0) as usize * target.width;
-            let n = (x0 as i32) - x_base;
-            let mut vals = v_row;
-            for i in 0..E::VARYINGS.min(V) {
-                vals[i] = v_row[i].add_mul(v_dx[i], n);
+            let (s0, s1) = (row + x0 as usize, row + x1 as usize);
+            target.dirty = (target.dirty.0.min(x0 as usize), target.dirty.1.max(x1 as usize));
+            let color = &mut target.color[s0..s1];
+            let depths = &mut target.depth[s0..s1];
+            if careful {
+                let (px, py) = ((x0 << f) + (1 << (f - 1)) - a.x, (y << f) + (1 << (f - 1)) - a.y);
+                let len = x1 - x0;
+                let (zs, zd) = z.clamped_span(px, py, len, f);
+                let (qs, qd) = q.clamped_span(px, py, len, f);
+                let mut vals = [S::default(); MAX_VARYINGS];
+                let mut steps = [S::default(); MAX_VARYINGS];
+                for i in 0..n {
+                    (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
+                }
+                span::<C, S, E, P, D>(color, depths, zs, zd, vals, &steps, qs, qd, face);
+            } else {
+                let k = x0 - x_base;
+                let mut vals = v_row;
+                for i in 0..n {
+                    vals[i] = v_row[i].add_mul(v_dx[i], k);
+                }
+                span::<C, S, E, P, D>(color, depths, z_row.add_mul(z.dx, k), z.dx, vals, &v_dx, q_row.add_mul(q.dx, k), q.dx, face);
             }
-            span::<C, S, E, P, D>(
-                &mut target.color[row + x0..row + x1],
-                &mut target.depth[row + x0..row + x1],
-                z_row.add_mul(z_dx, n),
-                z_dx,
-                vals,
-                &v_dx,
-                q_row.add_mul(q_dx, n),
-                q_dx,
-                face,
-            );
         }
         long.step();
         short.step();
-        z_row = z_row.add(z_dy);
+        z_row = z_row.add(z.dy);
         if P::CORRECT {
-            q_row = q_row.add(q_dy);
+            q_row = q_row.add(q.dy);
         }
-        for i in 0..E::VARYINGS.min(V) {
-            v_row[i] = v_row[i].add(v_dy[i]);
+        for i in 0..n {
+            v_row[i] = v_row[i].add(vary[i].dy);
         }
     }
 }
 
 /// The inner loop: one row of one triangle. No branch depends on a feature
-/// at run time; `P` and `D` are constants here.
+/// at run time; `P` and `D` are constants here, and every value is known
+/// to be in range, so nothing is clamped per pixel.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn span<C, S, E, P, D>(
@@ -333,14 +429,14 @@ fn span<C, S, E, P, D>(
     q_dx: S,
     face: C,
 ) where
-    C: From<Rgb888> + Into<Rgb888> + Copy,
+    C: Color,
     S: Interp,
     E: Effect,
     P: Perspective,
     D: DepthMode,
 {
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
-        let zq = z.quantize(8, u16::MAX as u32) as u16;
+        let zq = z.depth16();
         if !D::TEST || zq < *zb {
             if D::WRITE {
                 *zb = zq;
@@ -356,7 +452,9 @@ fn span<C, S, E, P, D>(
                 E::shade(face, &vals, *px)
             };
         }
-        z = z.add(z_dx);
+        if D::TEST || D::WRITE {
+            z = z.add(z_dx);
+        }
         if P::CORRECT {
             q = q.add(q_dx);
         }

@@ -15,12 +15,13 @@
 //! + VERTS·(16 + 4·V)               transformed vertices
 //! + TRIS·16                        queued triangles
 //! + 2·H                            per-strip list heads
+//! + size_of::<C>()                 the background the strips hold
 //! ```
 //! rounded up to a multiple of 4. A [`Frame`] adds about 12 bytes per
 //! draw-call slot ([`MAX_DRAW_CALLS`]) on the stack while it is recorded.
 
 use crate::clip::{self, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
-use crate::effect::{vertex_varyings, Effect, FaceInput, VertexInput};
+use crate::effect::{vertex_varyings, Color, Effect, FaceInput, VertexInput};
 use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::Mesh;
@@ -31,7 +32,7 @@ use crate::tri::TriVertex;
 use crate::vertex::{self, VertexStage};
 use core::marker::PhantomData;
 use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
+use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 use embedded_graphics::prelude::{Point, Size};
 use embedded_graphics::primitives::Rectangle;
 use heapless::Vec;
@@ -131,7 +132,7 @@ pub trait MaterialProgram<C, S: Settings, const V: usize> {
 
 impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
 where
-    C: From<Rgb888> + Into<Rgb888> + Copy,
+    C: Color,
     S: Settings,
     E: Effect,
     P: Perspective,
@@ -169,13 +170,14 @@ pub struct Renderer<
     vertices: [ScreenVertex<V>; VERTS],
     triangles: [TriRecord; TRIS],
     heads: [u16; H],
+    clean: C,
     _settings: PhantomData<S>,
 }
 
 impl<C, const W: usize, const H: usize, const STRIP: usize, const VERTS: usize, const TRIS: usize, const V: usize, S>
     Renderer<C, W, H, STRIP, VERTS, TRIS, V, S>
 where
-    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    C: Color,
     S: Settings,
 {
     const VALID: () = {
@@ -195,6 +197,7 @@ where
             vertices: [ScreenVertex::ZERO; VERTS],
             triangles: [TriRecord::EMPTY; TRIS],
             heads: [NONE; H],
+            clean: fill,
             _settings: PhantomData,
         }
     }
@@ -215,6 +218,7 @@ where
             vertices: &mut self.vertices,
             triangles: &mut self.triangles,
             heads: &mut self.heads,
+            clean: &mut self.clean,
             width: W,
             height: H,
             strip: STRIP,
@@ -250,6 +254,7 @@ pub struct HostRenderer<C, const V: usize = 3, S = FixedPoint> {
     vertices: std::vec::Vec<ScreenVertex<V>>,
     triangles: std::vec::Vec<TriRecord>,
     heads: std::vec::Vec<u16>,
+    clean: C,
     width: usize,
     height: usize,
     strip: usize,
@@ -259,7 +264,7 @@ pub struct HostRenderer<C, const V: usize = 3, S = FixedPoint> {
 #[cfg(feature = "std")]
 impl<C, const V: usize, S> HostRenderer<C, V, S>
 where
-    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    C: Color,
     S: Settings,
 {
     /// A `width`×`height` renderer with `strip` rows per strip and room for
@@ -280,6 +285,7 @@ where
             vertices: std::vec![ScreenVertex::ZERO; vertices],
             triangles: std::vec![TriRecord::EMPTY; triangles],
             heads: std::vec![NONE; height],
+            clean: fill,
             width,
             height,
             strip,
@@ -301,6 +307,7 @@ where
             vertices: &mut self.vertices,
             triangles: &mut self.triangles,
             heads: &mut self.heads,
+            clean: &mut self.clean,
             width: self.width,
             height: self.height,
             strip: self.strip,
@@ -316,6 +323,9 @@ struct Buffers<'a, C, const V: usize> {
     vertices: &'a mut [ScreenVertex<V>],
     triangles: &'a mut [TriRecord],
     heads: &'a mut [u16],
+    /// The color every pixel of the strip buffer holds outside the columns
+    /// a strip dirtied (which are cleared again after it is sent).
+    clean: &'a mut C,
     width: usize,
     height: usize,
     strip: usize,
@@ -339,7 +349,7 @@ type Corners = [u16; 3];
 
 impl<'r, 'm, C, const V: usize, S> Frame<'r, 'm, C, V, S>
 where
-    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    C: Color,
     S: Settings,
 {
     fn new(b: Buffers<'r, C, V>, view_proj: Mat4, lights: &Lights, background: C) -> Self {
@@ -412,7 +422,7 @@ where
             subpixel_bits: S::SUBPIXEL_BITS,
         };
         for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
-            *slot = stage.vertex(mesh, i);
+            *slot = stage.vertex::<C, V>(mesh, i);
         }
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
@@ -432,7 +442,7 @@ where
             };
             let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
                 let i = local[vi];
-                ClipVertex { pos: stage.clip_position(p[i]), attrs: stage.varyings(mesh, i), src: corners[vi] }
+                ClipVertex { pos: stage.clip_position(p[i]), attrs: stage.varyings::<C, V>(mesh, i), src: corners[vi] }
             });
             if let Err(e) = res {
                 self.rollback(base, snapshot);
@@ -463,7 +473,7 @@ where
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {
                 let input = VertexInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: v.color, uv: Vec2::new(0.0, 0.0) };
-                vertex_varyings(&material.effect, &input, &lights)
+                vertex_varyings::<C, E, V>(&material.effect, &input, &lights)
             };
             let face = if E::USES_FACE {
                 material.effect.face(&FaceInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: tri[0].color }, &lights)
@@ -619,6 +629,12 @@ where
             tris[i].next = b.heads[s];
             b.heads[s] = i as u16;
         }
+        // The strip buffers stay clean between strips: only the columns a
+        // strip dirtied are cleared after it is sent.
+        if *b.clean != background {
+            b.color.fill(background);
+            *b.clean = background;
+        }
         // Triangles that continue into the next strip, in submission order.
         let mut carried = NONE;
         for s in 0..strips {
@@ -630,9 +646,8 @@ where
                 width,
                 y0: y0 as i32,
                 rows: rows as i32,
+                dirty: (width, 0),
             };
-            strip.color.fill(background);
-            strip.depth.fill(DEPTH_CLEAR);
             let (mut fresh, mut old) = (b.heads[s], carried);
             let (mut next_head, mut next_tail) = (NONE, NONE);
             let mut draw = 0;
@@ -664,9 +679,29 @@ where
             }
             carried = next_head;
             let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(width as u32, rows as u32));
-            target.fill_contiguous(&area, strip.color.iter().copied())?;
+            let sent = target.fill_contiguous(&area, strip.color.iter().copied());
+            clean_columns(strip, background);
+            sent?;
         }
         Ok(stats)
+    }
+}
+
+/// Restores the background color and cleared depth in the columns a strip
+/// dirtied.
+fn clean_columns<C: Copy>(strip: StripTarget<'_, C>, background: C) {
+    let (x0, x1) = strip.dirty;
+    if x0 >= x1 {
+        return;
+    }
+    if x1 - x0 == strip.width {
+        strip.color.fill(background);
+        strip.depth.fill(DEPTH_CLEAR);
+        return;
+    }
+    for (c, z) in strip.color.chunks_exact_mut(strip.width).zip(strip.depth.chunks_exact_mut(strip.width)) {
+        c[x0..x1].fill(background);
+        z[x0..x1].fill(DEPTH_CLEAR);
     }
 }
 

@@ -1,23 +1,30 @@
 //! Built-in scenes made of generated meshes, shared by the demo, the tests
 //! and the benchmarks, so that none of them needs a file.
 
-use crate::effect::{Flat, Gouraud};
+use crate::effect::{Color, Flat, Gouraud};
 use crate::material::Material;
 use crate::math::{Mat4, Vec3};
-use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, MeshData};
+use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, Mesh, MeshData};
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, DirectionalLight, Lights, PointLight};
 use crate::settings::Settings;
+use crate::tri::TriVertex;
 use embedded_graphics::pixelcolor::{IntoStorage, PixelColor, Rgb888};
 use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Pixel, Size};
 use embedded_graphics::primitives::Rectangle;
 
+static TORUS_DATA: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
+static SPHERE_DATA: MeshData<{ sphere_vertex_count(24, 16) }, { sphere_index_count(24, 16) }> = MeshData::uv_sphere(24, 16, 0.8);
+static CUBE_DATA: MeshData<24, 36> = MeshData::cube(1.2);
+
+// The meshes are validated and their bounds computed at compile time, so a
+// draw call starts from a ready `Mesh`.
 /// A torus, 32 × 16 segments (561 vertices, 1,024 triangles).
-pub static TORUS: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
+pub static TORUS: Mesh<'static> = TORUS_DATA.mesh();
 /// A UV sphere, 24 × 16 segments (425 vertices, 720 triangles).
-pub static SPHERE: MeshData<{ sphere_vertex_count(24, 16) }, { sphere_index_count(24, 16) }> = MeshData::uv_sphere(24, 16, 0.8);
+pub static SPHERE: Mesh<'static> = SPHERE_DATA.mesh();
 /// A cube of edge 1.2 (24 vertices, 12 triangles).
-pub static CUBE: MeshData<24, 36> = MeshData::cube(1.2);
+pub static CUBE: Mesh<'static> = CUBE_DATA.mesh();
 
 /// Gouraud-shaded orange.
 pub static ORANGE: Material<Gouraud> = Material::new(Gouraud).with_color(Rgb888::new(255, 140, 40));
@@ -50,32 +57,43 @@ pub fn demo_lights() -> Lights {
 /// between a flat cube and a Gouraud sphere.
 pub fn draw_demo<C, const V: usize, S>(frame: &mut Frame<'_, '_, C, V, S>, t: f32) -> Result<(), DrawError>
 where
-    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    C: Color,
     S: Settings,
 {
     let spin = Mat4::rotation_y(t * 0.9) * Mat4::rotation_x(0.6 + t * 0.5);
-    frame.draw(&TORUS.mesh(), &spin, &ORANGE)?;
+    frame.draw(&TORUS, &spin, &ORANGE)?;
     let cube = Mat4::translation(Vec3::new(-2.4, 0.0, 0.5)) * Mat4::rotation_y(-t * 1.3) * Mat4::rotation_x(0.5);
-    frame.draw(&CUBE.mesh(), &cube, &BLUE)?;
+    frame.draw(&CUBE, &cube, &BLUE)?;
     let sphere = Mat4::translation(Vec3::new(2.4, 0.2 * crate::math::sin(t * 2.0), 0.5)) * Mat4::rotation_y(t);
-    frame.draw(&SPHERE.mesh(), &sphere, &GREEN)
+    frame.draw(&SPHERE, &sphere, &GREEN)
 }
 
 /// Names of the benchmark scenes, in the order [`draw_bench`] takes them.
-pub const BENCH_SCENES: [&str; 3] = ["torus", "demo-t0", "demo-t1.7"];
+pub const BENCH_SCENES: [&str; 5] = ["empty", "fill", "torus", "demo-t0", "demo-t1.7"];
+
+/// Vertex-colored, depth-tested material of the `fill` benchmark scene.
+pub static FILL: Material<crate::effect::VertexColor> = Material::new(crate::effect::VertexColor);
 
 /// Draws benchmark scene `index` (see [`BENCH_SCENES`]) with the demo's
-/// camera and lights: the generated torus alone, or the demo scene at two
-/// moments. Out-of-range indices draw nothing.
+/// camera and lights: nothing (the cost of clearing and sending strips),
+/// two vertex-colored triangles covering a 320×240 screen (the cost per
+/// pixel), the generated torus alone, or the demo scene at two moments.
+/// Out-of-range indices draw nothing.
 pub fn draw_bench<C, const V: usize, S>(frame: &mut Frame<'_, '_, C, V, S>, index: usize) -> Result<(), DrawError>
 where
-    C: PixelColor + From<Rgb888> + Into<Rgb888>,
+    C: Color,
     S: Settings,
 {
     match index {
-        0 => frame.draw(&TORUS.mesh(), &(Mat4::rotation_y(0.4) * Mat4::rotation_x(0.6)), &ORANGE),
-        1 => draw_demo(frame, 0.0),
-        2 => draw_demo(frame, 1.7),
+        1 => {
+            let v = |x: f64, y: f64, z: f32, r: u8, g: u8, b: u8| TriVertex { x, y, z, w: 1.0, color: Rgb888::new(r, g, b) };
+            let (tl, tr) = (v(0.0, 0.0, 0.2, 255, 0, 0), v(320.0, 0.0, 0.4, 0, 255, 0));
+            let (bl, br) = (v(0.0, 240.0, 0.6, 0, 0, 255), v(320.0, 240.0, 0.8, 255, 255, 255));
+            frame.draw_window_triangles([[tl, tr, br], [tl, br, bl]], &FILL)
+        }
+        2 => frame.draw(&TORUS, &(Mat4::rotation_y(0.4) * Mat4::rotation_x(0.6)), &ORANGE),
+        3 => draw_demo(frame, 0.0),
+        4 => draw_demo(frame, 1.7),
         _ => Ok(()),
     }
 }

@@ -3,7 +3,7 @@
 //! projection of visible vertices to snapped window coordinates.
 
 use crate::clip::{to_window, ClipVertex};
-use crate::effect::{vertex_varyings, Effect, VertexInput};
+use crate::effect::{vertex_varyings, Color, Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::raster::{snap, ScreenVertex};
@@ -71,15 +71,15 @@ impl<E: Effect> VertexStage<'_, E> {
 
     /// Varyings of mesh vertex `i`.
     #[inline]
-    pub fn varyings<const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
+    pub fn varyings<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
         let world = if E::LIT_VERTICES { self.model.transform_point3(mesh.positions()[i]) } else { Vec3::ZERO };
-        self.varyings_at(mesh, i, world)
+        self.varyings_at::<C, V>(mesh, i, world)
     }
 
     /// Varyings of mesh vertex `i` whose world position is known (only
     /// used by lit effects).
     #[inline]
-    fn varyings_at<const V: usize>(&self, mesh: &Mesh<'_>, i: usize, position: Vec3) -> [f32; V] {
+    fn varyings_at<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, position: Vec3) -> [f32; V] {
         if E::VARYINGS == 0 {
             return [0.0; V];
         }
@@ -90,7 +90,7 @@ impl<E: Effect> VertexStage<'_, E> {
             color: mesh.colors().map_or(self.color, |c| c[i]),
             uv: mesh.uvs().map_or(Vec2::new(0.0, 0.0), |u| u[i]),
         };
-        vertex_varyings(self.effect, &input, self.lights)
+        vertex_varyings::<C, E, V>(self.effect, &input, self.lights)
     }
 
     /// Transforms mesh vertex `i` into a stored vertex: projected and
@@ -98,7 +98,7 @@ impl<E: Effect> VertexStage<'_, E> {
     /// otherwise flagged. The world position is computed once, for both
     /// the projection and the lighting.
     #[inline]
-    pub fn vertex<const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
+    pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
         let p = mesh.positions()[i];
         let (clip, world) = if E::LIT_VERTICES {
             let w = self.model.transform_point3(p);
@@ -106,7 +106,7 @@ impl<E: Effect> VertexStage<'_, E> {
         } else {
             (self.mvp.transform_point(p), Vec3::ZERO)
         };
-        let attrs = self.varyings_at(mesh, i, world);
+        let attrs = self.varyings_at::<C, V>(mesh, i, world);
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }
 }

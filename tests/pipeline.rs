@@ -35,7 +35,12 @@ fn golden(name: &str, img: &Image<Rgb565>) {
     if differ != 0 {
         let out = std::env::temp_dir().join(format!("{name}-actual.png"));
         img.save_png(&out).unwrap();
-        panic!("{name}: {differ} pixels differ from {path}; actual image written to {}", out.display());
+        let ch = |a: u8, b: u8| a.abs_diff(b);
+        let worst = got.iter().zip(&want.pixels).map(|(a, b)| ch(a.r(), b.r()).max(ch(a.g(), b.g())).max(ch(a.b(), b.b()))).max();
+        panic!(
+            "{name}: {differ} pixels differ from {path} (largest channel difference {worst:?} of 255); actual image written to {}",
+            out.display()
+        );
     }
 }
 
@@ -116,8 +121,8 @@ fn back_face_culling_is_right_under_perspective() {
     let camera = Camera { fov_y: 1.4, ..Camera::looking_at(Vec3::new(0.0, 0.0, -4.0), Vec3::ZERO) };
     for (x, y) in [(0.0, 0.0), (2.8, 0.0), (-2.5, 1.8), (1.0, -2.2)] {
         let model = Mat4::translation(Vec3::new(x, y, 0.0)) * Mat4::rotation_y(0.4);
-        let front = mesh_coverage(&SPHERE.mesh(), &model, &camera, Cull::Back, 120, 90);
-        let all = mesh_coverage(&SPHERE.mesh(), &model, &camera, Cull::None, 120, 90);
+        let front = mesh_coverage(&SPHERE, &model, &camera, Cull::Back, 120, 90);
+        let all = mesh_coverage(&SPHERE, &model, &camera, Cull::None, 120, 90);
         assert!(front.iter().all(|&c| c <= 1), "at ({x}, {y}) a front face overlaps another");
         for (f, a) in front.iter().zip(&all) {
             assert_eq!(*f == 1, *a > 0, "at ({x}, {y}) the front faces do not cover the silhouette");
@@ -133,7 +138,7 @@ fn closed_meshes_have_no_cracks_or_overlaps() {
     let camera = Camera::looking_at(Vec3::new(0.3, 1.0, -3.5), Vec3::ZERO);
     for t in 0..6 {
         let model = Mat4::rotation_y(t as f32 * 0.7) * Mat4::rotation_x(0.3 * t as f32);
-        let cov = mesh_coverage(&TORUS.mesh(), &model, &camera, Cull::None, 96, 80);
+        let cov = mesh_coverage(&TORUS, &model, &camera, Cull::None, 96, 80);
         // A torus seen from here overlaps itself, so 2 or 4 layers.
         assert!(cov.iter().all(|&c| c % 2 == 0), "odd coverage: a crack or an overlap");
         assert!(cov.iter().filter(|&&c| c > 0).count() > 500);
@@ -202,7 +207,7 @@ fn lighting_does_not_change_when_mesh_and_camera_move_together() {
         let mut r: HostRenderer<Rgb888> = HostRenderer::new(64, 48, 16, 1000, 2000, Rgb888::BLACK).unwrap();
         let m = Material::new(Gouraud).with_color(Rgb888::WHITE);
         let mut frame = r.begin_frame(&camera, &lights, Rgb888::BLACK);
-        frame.draw(&SPHERE.mesh(), &(Mat4::translation(offset) * Mat4::rotation_y(0.3)), &m).unwrap();
+        frame.draw(&SPHERE, &(Mat4::translation(offset) * Mat4::rotation_y(0.3)), &m).unwrap();
         let mut img = Image::new(64, 48, Rgb888::BLACK);
         let Ok(_) = frame.finish(&mut img);
         img
@@ -238,7 +243,7 @@ fn depth_test_keeps_the_nearest_surface() {
 #[test]
 fn ram_formula_matches_size_of() {
     fn formula(w: usize, h: usize, strip: usize, verts: usize, tris: usize, v: usize, color: usize) -> usize {
-        let bytes = w * strip * (color + 2) + verts * (16 + 4 * v) + tris * 16 + 2 * h;
+        let bytes = w * strip * (color + 2) + verts * (16 + 4 * v) + tris * 16 + 2 * h + color;
         bytes.div_ceil(4) * 4
     }
     assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200>>(), formula(320, 240, 16, 1000, 1200, 3, 2));
@@ -253,9 +258,9 @@ fn capacity_errors_are_typed_and_leave_the_frame_unchanged() {
     let mut r: HostRenderer<Rgb565> = HostRenderer::new(64, 48, 16, 500, 100, Rgb565::BLACK).unwrap();
     let mut frame = r.begin_frame(&camera, &demo_lights(), Rgb565::BLACK);
     // The torus has 561 vertices: too many.
-    assert_eq!(frame.draw(&TORUS.mesh(), &Mat4::IDENTITY, &m), Err(DrawError::VertexCapacity { needed: 561, capacity: 500 }));
+    assert_eq!(frame.draw(&TORUS, &Mat4::IDENTITY, &m), Err(DrawError::VertexCapacity { needed: 561, capacity: 500 }));
     // The sphere's 425 vertices fit, its ~360 visible triangles do not.
-    assert_eq!(frame.draw(&SPHERE.mesh(), &Mat4::IDENTITY, &m), Err(DrawError::TriangleCapacity { capacity: 100 }));
+    assert_eq!(frame.draw(&SPHERE, &Mat4::IDENTITY, &m), Err(DrawError::TriangleCapacity { capacity: 100 }));
     assert_eq!(frame.stats(), soft3d::FrameStats::default(), "refused draws leave no trace");
     static SMALL: MeshData<24, 36> = MeshData::cube(1.0);
     frame.draw(&SMALL.mesh(), &Mat4::IDENTITY, &m).unwrap();

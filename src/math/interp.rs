@@ -2,34 +2,68 @@
 //!
 //! The rasterizer is written once, generic over this trait; each
 //! implementation is a compile-time choice with its own cost and accuracy.
+//!
+//! A plane equation is kept as its value at the triangle's first vertex
+//! and its two gradients (per pixel). Everything else (the value at the
+//! first pixel of a strip, the check that no pixel can leave its range) is
+//! derived from those three numbers with [`Interp::plane_at`] and
+//! [`Interp::plane_within`], so stepping and checking agree exactly.
 
 use super::Fixed;
 
 /// A number type that plane equations are stepped in.
 ///
-/// All operations are total: they saturate or wrap, never panic, and
-/// quantization clamps, so no garbage reaches a buffer.
-pub trait Interp: Copy + Default + PartialEq + core::fmt::Debug + 'static {
+/// All operations are total: they saturate or wrap, never panic.
+pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + 'static {
     /// A short name for reports ("f32", "fixed16").
     const NAME: &'static str;
+    /// Depth values are interpolated as `depth * DEPTH_SCALE`, where
+    /// `depth` is in stored 16-bit units (`0..=65535`).
+    const DEPTH_SCALE: f32;
+    /// Whether stepping can wrap around, so that a triangle's planes must
+    /// be checked against their ranges ([`Interp::plane_within`]). `f32`
+    /// saturates when converted instead.
+    const WRAPS: bool;
     /// From `f32` (saturating; NaN gives zero).
     fn from_f32(v: f32) -> Self;
     /// To `f32`.
     fn to_f32(self) -> f32;
     /// `self + d`.
     fn add(self, d: Self) -> Self;
+    /// `self - d`.
+    fn sub(self, d: Self) -> Self;
     /// `self + d * n`.
     fn add_mul(self, d: Self, n: i32) -> Self;
+    /// `self / n` for `n > 0`.
+    fn div_int(self, n: i32) -> Self;
     /// `self * o`.
     fn mul(self, o: Self) -> Self;
     /// `1 / self` for a positive value (zero or less gives a large value).
     fn recip(self) -> Self;
-    /// `floor(self * 2^frac_bits)`, clamped to `[0, max]`.
-    fn quantize(self, frac_bits: u32, max: u32) -> u32;
+    /// `min(max(self, lo), hi)`.
+    fn clamp_to(self, lo: Self, hi: Self) -> Self;
+    /// The integer part as a color channel. The caller keeps the value in
+    /// `[0, 256)`; outside it the result wraps (fixed) or saturates (`f32`).
+    fn channel(self) -> u8;
+    /// A depth value (see [`Interp::DEPTH_SCALE`]) as stored depth, under
+    /// the same contract as [`Interp::channel`] for `[0, 65536)`.
+    fn depth16(self) -> u16;
+    /// The value of the plane `(value0, dx, dy)` at an offset of
+    /// `(ox, oy)` units of `2^-f` pixels from its origin (wrapping in
+    /// fixed point: exactly what stepping from the origin would give).
+    fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self;
+    /// Whether the plane's exact value at that offset is in `[lo, hi]`.
+    #[allow(clippy::too_many_arguments)]
+    fn plane_within(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> bool;
+    /// The plane's exact value at that offset, clamped to `[lo, hi]`.
+    #[allow(clippy::too_many_arguments)]
+    fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self;
 }
 
 impl Interp for f32 {
     const NAME: &'static str = "f32";
+    const DEPTH_SCALE: f32 = 1.0;
+    const WRAPS: bool = false;
     #[inline]
     fn from_f32(v: f32) -> Self {
         if v.is_nan() {
@@ -42,19 +76,27 @@ impl Interp for f32 {
     fn to_f32(self) -> f32 {
         self
     }
-    #[inline]
+    #[inline(always)]
     fn add(self, d: Self) -> Self {
         self + d
     }
-    #[inline]
+    #[inline(always)]
+    fn sub(self, d: Self) -> Self {
+        self - d
+    }
+    #[inline(always)]
     fn add_mul(self, d: Self, n: i32) -> Self {
         self + d * n as f32
     }
     #[inline]
+    fn div_int(self, n: i32) -> Self {
+        self / n as f32
+    }
+    #[inline(always)]
     fn mul(self, o: Self) -> Self {
         self * o
     }
-    #[inline]
+    #[inline(always)]
     fn recip(self) -> Self {
         if self > 1e-30 {
             1.0 / self
@@ -63,14 +105,59 @@ impl Interp for f32 {
         }
     }
     #[inline]
-    fn quantize(self, frac_bits: u32, max: u32) -> u32 {
-        // `as` saturates at 0 and u32::MAX and maps NaN to 0.
-        ((self * (1u32 << frac_bits) as f32) as u32).min(max)
+    fn clamp_to(self, lo: Self, hi: Self) -> Self {
+        if self > lo {
+            if self < hi {
+                self
+            } else {
+                hi
+            }
+        } else {
+            lo
+        }
+    }
+    #[inline(always)]
+    fn channel(self) -> u8 {
+        // `as` saturates and maps NaN to 0.
+        self as u8
+    }
+    #[inline(always)]
+    fn depth16(self) -> u16 {
+        self as u16
+    }
+    #[inline]
+    fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self {
+        let unit = 1.0 / (1u32 << f) as f32;
+        value0 + dx * (ox as f32 * unit) + dy * (oy as f32 * unit)
+    }
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn plane_within(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> bool {
+        let v = Self::plane_at(value0, dx, dy, ox, oy, f);
+        v >= lo && v <= hi
+    }
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self {
+        Self::plane_at(value0, dx, dy, ox, oy, f).clamp_to(lo, hi)
+    }
+}
+
+impl Fixed {
+    /// `value0 + (dx * ox + dy * oy) / 2^f` exactly, in raw units.
+    #[inline]
+    fn plane_exact(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> i64 {
+        // |d| < 2^31 and |o| <= 2^30: each product below 2^61, no overflow.
+        let sum = dx.to_bits() as i64 * ox as i64 + dy.to_bits() as i64 * oy as i64;
+        value0.to_bits() as i64 + (sum >> f)
     }
 }
 
 impl Interp for Fixed {
     const NAME: &'static str = "fixed16";
+    // Depth up to 65535 does not fit 16.16 signed; it is kept halved (17.15).
+    const DEPTH_SCALE: f32 = 0.5;
+    const WRAPS: bool = true;
     #[inline]
     fn from_f32(v: f32) -> Self {
         Fixed::from_f32(v)
@@ -79,13 +166,21 @@ impl Interp for Fixed {
     fn to_f32(self) -> f32 {
         Fixed::to_f32(self)
     }
-    #[inline]
+    #[inline(always)]
     fn add(self, d: Self) -> Self {
         self.wrapping_add(d)
     }
-    #[inline]
+    #[inline(always)]
+    fn sub(self, d: Self) -> Self {
+        Fixed::from_bits(self.to_bits().wrapping_sub(d.to_bits()))
+    }
+    #[inline(always)]
     fn add_mul(self, d: Self, n: i32) -> Self {
         Fixed::from_bits(self.to_bits().wrapping_add(d.to_bits().wrapping_mul(n)))
+    }
+    #[inline]
+    fn div_int(self, n: i32) -> Self {
+        Fixed::from_bits(self.to_bits().checked_div(n).unwrap_or(0))
     }
     #[inline]
     fn mul(self, o: Self) -> Self {
@@ -100,9 +195,30 @@ impl Interp for Fixed {
         }
     }
     #[inline]
-    fn quantize(self, frac_bits: u32, max: u32) -> u32 {
-        let v = self.to_bits() >> (Fixed::FRAC_BITS - frac_bits);
-        v.clamp(0, max as i32) as u32
+    fn clamp_to(self, lo: Self, hi: Self) -> Self {
+        self.clamp(lo, hi)
+    }
+    #[inline(always)]
+    fn channel(self) -> u8 {
+        (self.to_bits() >> Fixed::FRAC_BITS) as u8
+    }
+    #[inline(always)]
+    fn depth16(self) -> u16 {
+        (self.to_bits() >> (Fixed::FRAC_BITS - 1)) as u16
+    }
+    #[inline]
+    fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self {
+        Fixed::from_bits(Self::plane_exact(value0, dx, dy, ox, oy, f) as i32)
+    }
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn plane_within(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> bool {
+        (lo.to_bits() as i64..=hi.to_bits() as i64).contains(&Self::plane_exact(value0, dx, dy, ox, oy, f))
+    }
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self {
+        Fixed::from_bits(Self::plane_exact(value0, dx, dy, ox, oy, f).clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
     }
 }
 
@@ -116,17 +232,31 @@ mod tests {
         for _ in 0..4 {
             v = v.add(d);
         }
-        assert_eq!(v.quantize(0, 255), 11);
+        assert_eq!(v.channel(), 11);
         assert_eq!(S::from_f32(10.5).add_mul(d, 4), v);
-        assert_eq!(S::from_f32(-3.0).quantize(0, 255), 0);
-        assert_eq!(S::from_f32(300.0).quantize(0, 255), 255);
-        assert_eq!(S::from_f32(1.5).quantize(8, 65535), 384);
+        assert_eq!(v.sub(d), S::from_f32(11.25));
+        assert_eq!(S::from_f32(3.0).div_int(4), S::from_f32(0.75));
+        assert_eq!(S::from_f32(300.0).clamp_to(S::from_f32(0.0), S::from_f32(255.0)), S::from_f32(255.0));
+        assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth16(), 40000);
         assert_eq!(S::from_f32(0.5).recip().to_f32(), 2.0);
+        // Plane 10 + 2x - y at (3.5, 1.25) pixels with 4 sub-pixel bits (f = 5).
+        let (v0, dx, dy) = (S::from_f32(10.0), S::from_f32(2.0), S::from_f32(-1.0));
+        assert_eq!(S::plane_at(v0, dx, dy, 112, 40, 5), S::from_f32(15.75));
+        assert!(S::plane_within(v0, dx, dy, 112, 40, 5, S::from_f32(15.0), S::from_f32(15.75)));
+        assert!(!S::plane_within(v0, dx, dy, 112, 40, 5, S::from_f32(0.0), S::from_f32(15.5)));
     }
 
     #[test]
-    fn both_scalars_step_and_quantize_alike() {
+    fn both_scalars_step_alike() {
         stepping::<f32>();
         stepping::<Fixed>();
+    }
+
+    #[test]
+    fn fixed_plane_checks_are_exact_far_away() {
+        // A steep plane evaluated 2^29 units away: the exact value is far
+        // outside i32 even though stepping wraps; the check must say so.
+        let (v0, dx) = (Fixed::from_f32(100.0), Fixed::from_f32(1000.0));
+        assert!(!Fixed::plane_within(v0, dx, Fixed::ZERO, 1 << 29, 0, 5, Fixed::ZERO, Fixed::from_f32(255.0)));
     }
 }

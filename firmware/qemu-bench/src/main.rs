@@ -38,6 +38,17 @@ impl Timer {
     }
 }
 
+/// Built with `SOFT3D_BENCH_ONLY=scene,mode` in the environment, the
+/// benchmark runs only that scene and mode (for `scripts/qemu-profile.py`).
+const ONLY: Option<&str> = option_env!("SOFT3D_BENCH_ONLY");
+
+fn selected(scene: &str, mode: &str) -> bool {
+    match ONLY {
+        None => true,
+        Some(only) => only.split_once(',').is_some_and(|(s, m)| s == scene && m == mode),
+    }
+}
+
 const TARGET: &str = if cfg!(target_abi = "eabihf") { "m4f" } else { "m0" };
 
 /// The cost of the sink alone: the same 15 strips of 320×16 pixels
@@ -59,6 +70,9 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str, sink: u32) {
     let mut renderer: Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, 3, S> = Renderer::new(Rgb565::BLACK);
     let (camera, lights) = (demo_camera(), demo_lights());
     for (i, name) in BENCH_SCENES.iter().enumerate() {
+        if !selected(name, mode) {
+            continue;
+        }
         let mut out = FrameChecksum::new(320, 240);
         timer.start();
         let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
