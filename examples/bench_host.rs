@@ -13,9 +13,9 @@ fn run<S: Settings>(mode: &str) {
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
         draw_bench(&mut frame, i).expect("the scene fits its buffers");
-        let mut sink = FrameChecksum::new(320, 240);
+        let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
         let Ok(_) = frame.finish(&mut sink);
-        println!("{name},{mode},{:08x}", sink.sum);
+        println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
     }
 }
 

@@ -6,7 +6,7 @@
 //! behind the eye never reaches the perspective divide, so nothing behind
 //! the camera is drawn mirrored. The screen edges need no clipping, since
 //! the rasterizer clamps spans to the strip; only vertices beyond the guard
-//! band ([`GUARD`](crate::raster::GUARD), millions of pixels away) are
+//! band ([`guard`](crate::raster::guard), thousands to millions of pixels away) are
 //! clipped, in `f64` window coordinates so the rounding is far below a
 //! pixel.
 

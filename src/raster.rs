@@ -23,13 +23,18 @@ use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
 use crate::math::Interp;
 
-/// Largest magnitude of a snapped coordinate, in units of `2^-F` pixels.
+/// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
+/// sub-pixel precision, in units of `2^-F` pixels (`F = subpixel_bits + 1`):
+/// `2^(29 - F)`.
 ///
-/// Differences then fit in 31 bits and every product in setup in 61, so
-/// setup never overflows `i64`. Vertices beyond it are clipped to it first
-/// (see [`crate::clip`]). In pixels this is `2^(29 - F)`: 16.7 million
-/// pixels at 4 sub-pixel bits, 1 million at 8.
-pub const GUARD: i32 = 1 << 29;
+/// Edge heights in units times `2^F` then stay below `2^31`, so the edge
+/// walkers work in 32 bits, and every product in setup fits `i64`.
+/// Vertices beyond it are clipped to it first (see [`crate::clip`]). In
+/// pixels this is `2^(27 - 2 * subpixel_bits)`: 134 million pixels at 0
+/// sub-pixel bits, 524,288 at 4 and 2,048 at 8.
+pub const fn guard(subpixel_bits: u32) -> i32 {
+    1 << (28 - subpixel_bits)
+}
 
 /// Depth in [0, 1] maps to stored depth `floor(z * DEPTH_RANGE + 0.5)`:
 /// 0 to 65534, so that nothing drawn ever equals [`DEPTH_CLEAR`], and the
@@ -61,14 +66,14 @@ impl<const V: usize> ScreenVertex<V> {
 
 /// Snaps a window coordinate (pixels) to the sub-pixel grid, in units of
 /// `2^-F` pixels, rounding half up. `None` if it is not finite or lies
-/// beyond [`GUARD`]. Gives exactly what [`snap_f64`] gives for the same value.
+/// beyond the [`guard`] band. Gives exactly what [`snap_f64`] gives for the same value.
 #[inline]
 pub fn snap(v: f32, subpixel_bits: u32) -> Option<i32> {
     // Scaling by a power of two is exact. Below 2^23 adding 0.5 is exact
     // too; above, every f32 is already an integer.
     let s = v * (1u32 << subpixel_bits) as f32;
     let r = if s.abs() < 8_388_608.0 { floor_f32(s + 0.5) } else { s };
-    let limit = (GUARD >> 1) as f32;
+    let limit = (guard(subpixel_bits) >> 1) as f32;
     if r >= -limit && r <= limit {
         Some((r as i32) << 1)
     } else {
@@ -85,7 +90,7 @@ pub fn snap_f64(v: f64, subpixel_bits: u32) -> Option<i32> {
     if r > t {
         r -= 1.0;
     }
-    let limit = (GUARD >> 1) as f64;
+    let limit = (guard(subpixel_bits) >> 1) as f64;
     if r >= -limit && r <= limit {
         Some((r as i32) << 1)
     } else {
@@ -122,55 +127,53 @@ pub fn first_row_at_or_below(y: i32, subpixel_bits: u32) -> i32 {
     ((y as i64 - (1i64 << subpixel_bits) + (1i64 << f) - 1) >> f) as i32
 }
 
-/// `ceil(n / d)` and `d * ceil(n / d) - n` for `d > 0`, fast when both fit
-/// in 32 bits (divisions of 64-bit values are library calls on Cortex-M).
+/// `ceil(m / d)` and `d * ceil(m / d) - m` (in `[0, d)`) for `d > 0`;
+/// 32-bit division when `m` fits (64-bit division is a library call on
+/// Cortex-M).
 #[inline]
-fn div_ceil_rem(n: i64, d: i64) -> (i64, i64) {
-    let neg = -n;
-    if let (Ok(n32), Ok(d32)) = (i32::try_from(neg), i32::try_from(d)) {
-        (-(n32.div_euclid(d32)) as i64, n32.rem_euclid(d32) as i64)
+fn div_ceil_rem(m: i64, d: i32) -> (i32, i32) {
+    let (q, r) = match i32::try_from(m) {
+        Ok(m) => (m / d, m % d),
+        // |m| < 2^61 and d >= 2^F, so the quotient is a pixel coordinate
+        // within the guard band and the remainder is below d.
+        Err(_) => ((m / d as i64) as i32, (m % d as i64) as i32),
+    };
+    // Truncating division: r has the sign of m.
+    if r > 0 {
+        (q + 1, d - r)
     } else {
-        (-neg.div_euclid(d), neg.rem_euclid(d))
-    }
-}
-
-/// `floor(n / d)` and the remainder for `d > 0`.
-#[inline]
-fn div_floor_rem(n: i64, d: i64) -> (i64, i64) {
-    if let (Ok(n32), Ok(d32)) = (i32::try_from(n), i32::try_from(d)) {
-        (n32.div_euclid(d32) as i64, n32.rem_euclid(d32) as i64)
-    } else {
-        (n.div_euclid(d), n.rem_euclid(d))
+        (q, -r)
     }
 }
 
 /// Walks one edge down the rows, yielding the pixel bound at each row
 /// center exactly: `bound = ceil(m / d)` with `m` growing by a constant per
 /// row, tracked as quotient `bound` and remainder `err = bound * d - m`.
+/// Within the guard band every field fits 32 bits.
 struct EdgeWalker {
-    bound: i64,
-    err: i64,
-    step_q: i64,
-    step_r: i64,
-    d: i64,
+    bound: i32,
+    err: i32,
+    step_q: i32,
+    step_r: i32,
+    d: i32,
 }
 
 impl EdgeWalker {
     /// Edge from `a` down to `b` (`b.y > a.y`), positioned at pixel row `row`.
     #[inline]
     fn new(ax: i32, ay: i32, bx: i32, by: i32, row: i32, f: u32) -> Self {
-        let half = 1i64 << (f - 1);
-        let (dx, dy) = (bx as i64 - ax as i64, by as i64 - ay as i64);
+        let half = 1i32 << (f - 1);
+        // Coordinates are within ±2^(29-F), so dy << F < 2^31.
+        let (dx, dy) = (bx - ax, by - ay);
         let d = dy << f;
-        let yc = ((row as i64) << f) + half;
-        let m = (ax as i64 - half) * dy + dx * (yc - ay as i64);
+        let yc = (row << f) + half;
+        let m = (ax - half) as i64 * dy as i64 + dx as i64 * (yc - ay) as i64;
         let (bound, err) = div_ceil_rem(m, d);
         // One row adds dx * 2^F to m: dx / dy pixels.
-        let (q, r) = div_floor_rem(dx, dy);
-        Self { bound, err, step_q: q, step_r: r << f, d }
+        Self { bound, err, step_q: dx.div_euclid(dy), step_r: dx.rem_euclid(dy) << f, d }
     }
 
-    #[inline]
+    #[inline(always)]
     fn step(&mut self) {
         self.bound += self.step_q;
         self.err -= self.step_r;
@@ -351,16 +354,17 @@ where
     };
 
     // Stepping origin: the center of the strip's first row at the leftmost
-    // on-screen column of the bounding box.
+    // on-screen column of the bounding box. A span's start values are the
+    // origin's plus whole steps right and down (exactly what stepping gives).
     let min_x = a.x.min(b.x).min(c.x);
     let x_base = (min_x >> f).clamp(0, width - 1);
     let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_start << f) + (1 << (f - 1)) - a.y);
-    let mut z_row = z.at(ox, oy, f);
-    let mut q_row = q.at(ox, oy, f);
-    let mut v_row = [S::default(); MAX_VARYINGS];
+    let z0 = z.at(ox, oy, f);
+    let q0 = q.at(ox, oy, f);
+    let mut v0 = [S::default(); MAX_VARYINGS];
     let mut v_dx = [S::default(); MAX_VARYINGS];
     for i in 0..n {
-        v_row[i] = vary[i].at(ox, oy, f);
+        v0[i] = vary[i].at(ox, oy, f);
         v_dx[i] = vary[i].dx;
     }
 
@@ -373,43 +377,37 @@ where
             short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, f);
         }
         let (left, right) = if mid_left { (&short, &long) } else { (&long, &short) };
-        let x0 = left.bound.clamp(0, width as i64) as i32;
-        let x1 = right.bound.clamp(0, width as i64) as i32;
+        let x0 = left.bound.clamp(0, width);
+        let x1 = right.bound.clamp(0, width);
         if x0 < x1 {
             let row = (y - target.y0) as usize * target.width;
             let (s0, s1) = (row + x0 as usize, row + x1 as usize);
             target.dirty = (target.dirty.0.min(x0 as usize), target.dirty.1.max(x1 as usize));
             let color = &mut target.color[s0..s1];
             let depths = &mut target.depth[s0..s1];
+            let mut vals = [S::default(); MAX_VARYINGS];
             if careful {
                 let (px, py) = ((x0 << f) + (1 << (f - 1)) - a.x, (y << f) + (1 << (f - 1)) - a.y);
                 let len = x1 - x0;
                 let (zs, zd) = z.clamped_span(px, py, len, f);
                 let (qs, qd) = q.clamped_span(px, py, len, f);
-                let mut vals = [S::default(); MAX_VARYINGS];
                 let mut steps = [S::default(); MAX_VARYINGS];
                 for i in 0..n {
                     (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
                 }
                 span::<C, S, E, P, D>(color, depths, zs, zd, vals, &steps, qs, qd, face);
             } else {
-                let k = x0 - x_base;
-                let mut vals = v_row;
+                let (k, j) = (x0 - x_base, y - y_start);
                 for i in 0..n {
-                    vals[i] = v_row[i].add_mul(v_dx[i], k);
+                    vals[i] = v0[i].add_mul(vary[i].dy, j).add_mul(v_dx[i], k);
                 }
-                span::<C, S, E, P, D>(color, depths, z_row.add_mul(z.dx, k), z.dx, vals, &v_dx, q_row.add_mul(q.dx, k), q.dx, face);
+                let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
+                let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
+                span::<C, S, E, P, D>(color, depths, zs, z.dx, vals, &v_dx, qs, q.dx, face);
             }
         }
         long.step();
         short.step();
-        z_row = z_row.add(z.dy);
-        if P::CORRECT {
-            q_row = q_row.add(q.dy);
-        }
-        for i in 0..n {
-            v_row[i] = v_row[i].add(vary[i].dy);
-        }
     }
 }
 
@@ -475,7 +473,8 @@ mod tests {
         assert_eq!(snap(-0.5, 0), Some(0)); // half rounds up
         assert_eq!(snap(f32::NAN, 4), None);
         assert_eq!(snap(1e9, 4), None);
-        assert_eq!(snap_f64(1234567.0625, 4), Some(1234567 * 32 + 2));
+        assert_eq!(snap_f64(123456.0625, 4), Some(123456 * 32 + 2));
+        assert_eq!(snap_f64(600_000.0, 4), None); // beyond the guard band at 4 bits
         assert_eq!(snap_f64(-2.5, 0), Some(-4));
         assert_eq!(snap_f64(f64::INFINITY, 4), None);
     }
@@ -504,7 +503,7 @@ mod tests {
                 let m = (ax as i64 - half) * (by - ay) as i64 + (bx - ax) as i64 * (yc - ay as i64);
                 let d = ((by - ay) as i64) << f;
                 let expect = (m as f64 / d as f64).ceil() as i64;
-                assert_eq!(w.bound, expect, "edge {ax},{ay}->{bx},{by} row {row}");
+                assert_eq!(w.bound as i64, expect, "edge {ax},{ay}->{bx},{by} row {row}");
                 w.step();
             }
         }

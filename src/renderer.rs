@@ -25,7 +25,7 @@ use crate::effect::{vertex_varyings, Color, Effect, FaceInput, VertexInput};
 use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::Mesh;
-use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget, DEPTH_CLEAR, GUARD};
+use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget, DEPTH_CLEAR};
 use crate::scene::{Camera, Lighting, Lights};
 use crate::settings::{FixedPoint, Settings};
 use crate::tri::TriVertex;
@@ -409,12 +409,14 @@ where
         }
         self.begin_draw(material)?;
         let lights = self.lights;
+        let scale = if E::LIT_VERTICES { model.similarity_scale() } else { None };
+        let vertex_lights = scale.map_or(lights, |s| lights.in_model_space(model, s));
         let stage = VertexStage {
             model: *model,
-            view_proj: self.view_proj,
             mvp: self.view_proj * *model,
             normal_matrix: model.normal_matrix(),
-            lights: &lights,
+            lights: &vertex_lights,
+            model_space: scale.is_some(),
             effect: &material.effect,
             color: material.color,
             width: self.b.width as f32,
@@ -532,7 +534,7 @@ where
         let vs = &self.b.vertices;
         let fl =
             [vertex::flags(&vs[corners[0] as usize]), vertex::flags(&vs[corners[1] as usize]), vertex::flags(&vs[corners[2] as usize])];
-        if fl == [0, 0, 0] {
+        if fl[0] | fl[1] | fl[2] == 0 {
             return self.emit(corners, face, cull);
         }
         if fl.iter().any(|f| f & vertex::NOT_FINITE != 0) {
@@ -561,7 +563,7 @@ where
         let fits = |v: &WindowVertex<V>| snap_f64(v.x, bits).is_some() && snap_f64(v.y, bits).is_some();
         if !poly.iter().all(fits) {
             // Stay a pixel inside the guard so snapping cannot push past it.
-            let limit = ((GUARD >> (bits + 1)) - 1) as f64;
+            let limit = ((raster::guard(bits) >> (bits + 1)) - 1) as f64;
             clip::clip_guard(&mut poly, limit, perspective);
         }
         let mut idx: Vec<u16, { clip::MAX_CLIPPED }> = Vec::new();

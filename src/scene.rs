@@ -111,6 +111,18 @@ impl Lighting {
         }
     }
 
+    /// The same lights seen from the model space of a mesh placed by a
+    /// similarity `model` with scale `s` (see [`Mat4::similarity_scale`]):
+    /// unit model-space normals then light exactly as in world space.
+    pub fn in_model_space(&self, model: &Mat4, s: f32) -> Self {
+        let inverse = model.similarity_inverse(s);
+        Self {
+            ambient: self.ambient,
+            point: self.point.map(|p| PointLight { position: inverse.transform_point3(p.position), color: p.color }),
+            sun: self.sun.map(|(l, color)| (inverse.upper3().transform(l).normalize_or_zero(), color)),
+        }
+    }
+
     /// Diffuse light reaching a point with the given (unit) normal:
     /// `ambient + Σ color_i · clamp(n · l_i, 0, 1)`.
     #[inline]

@@ -100,18 +100,21 @@ where
 
 /// A `DrawTarget` that only folds every pixel it receives into a 32-bit
 /// FNV-1a checksum of the raw color values, so host and target frames can
-/// be compared without storing them.
+/// be compared without storing them. It also counts the pixels that differ
+/// from the background, the "pixels drawn" of per-pixel costs.
 pub struct FrameChecksum<C> {
     size: Size,
+    background: C,
     /// The checksum so far.
     pub sum: u32,
-    _color: core::marker::PhantomData<C>,
+    /// Pixels received that are not the background color.
+    pub drawn: u32,
 }
 
 impl<C> FrameChecksum<C> {
-    /// A checksum target of the given size.
-    pub const fn new(width: u32, height: u32) -> Self {
-        Self { size: Size::new(width, height), sum: 0x811c_9dc5, _color: core::marker::PhantomData }
+    /// A checksum target of the given size for frames on `background`.
+    pub const fn new(width: u32, height: u32, background: C) -> Self {
+        Self { size: Size::new(width, height), background, sum: 0x811c_9dc5, drawn: 0 }
     }
 }
 
@@ -130,6 +133,7 @@ where
 
     fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
         for Pixel(_, c) in pixels {
+            self.drawn += (c != self.background) as u32;
             self.sum = (self.sum ^ c.into_storage().into()).wrapping_mul(0x0100_0193);
         }
         Ok(())
@@ -137,6 +141,7 @@ where
 
     fn fill_contiguous<I: IntoIterator<Item = C>>(&mut self, _: &Rectangle, colors: I) -> Result<(), Self::Error> {
         for c in colors {
+            self.drawn += (c != self.background) as u32;
             self.sum = (self.sum ^ c.into_storage().into()).wrapping_mul(0x0100_0193);
         }
         Ok(())

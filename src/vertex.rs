@@ -2,7 +2,7 @@
 //! through the normal matrix, per-vertex effect work (lighting), and the
 //! projection of visible vertices to snapped window coordinates.
 
-use crate::clip::{to_window, ClipVertex};
+use crate::clip::ClipVertex;
 use crate::effect::{vertex_varyings, Color, Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
@@ -36,14 +36,18 @@ pub fn flags<const V: usize>(v: &ScreenVertex<V>) -> i32 {
 pub struct VertexStage<'a, E> {
     /// Model matrix.
     pub model: Mat4,
-    /// View-projection matrix.
-    pub view_proj: Mat4,
     /// Model-view-projection matrix.
     pub mvp: Mat4,
     /// Normal matrix of the model.
     pub normal_matrix: Mat3,
-    /// Lights of the frame.
+    /// Lights of the frame, in model space if `model_space` is set, else
+    /// in world space.
     pub lights: &'a Lighting,
+    /// Whether the model matrix is a similarity and `lights` were moved
+    /// into model space ([`Lighting::in_model_space`]): vertices are then
+    /// lit from their model-space position and normal, with no transform
+    /// and no normalization per vertex.
+    pub model_space: bool,
     /// Effect of the material.
     pub effect: &'a E,
     /// Material color, for meshes without vertex colors.
@@ -62,28 +66,23 @@ impl<E: Effect> VertexStage<'_, E> {
     /// keeps exactly the vertices its unclipped neighbors use.
     #[inline]
     pub fn clip_position(&self, p: Vec3) -> Vec4 {
-        if E::LIT_VERTICES {
-            self.view_proj.transform_point(self.model.transform_point3(p))
-        } else {
-            self.mvp.transform_point(p)
-        }
+        self.mvp.transform_point(p)
     }
 
     /// Varyings of mesh vertex `i`.
     #[inline]
     pub fn varyings<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
-        let world = if E::LIT_VERTICES { self.model.transform_point3(mesh.positions()[i]) } else { Vec3::ZERO };
-        self.varyings_at::<C, V>(mesh, i, world)
-    }
-
-    /// Varyings of mesh vertex `i` whose world position is known (only
-    /// used by lit effects).
-    #[inline]
-    fn varyings_at<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, position: Vec3) -> [f32; V] {
         if E::VARYINGS == 0 {
             return [0.0; V];
         }
-        let normal = if E::LIT_VERTICES { self.normal_matrix.transform(mesh.normals()[i]).normalize_or_zero() } else { Vec3::ZERO };
+        let (position, normal) = if !E::LIT_VERTICES {
+            (Vec3::ZERO, Vec3::ZERO)
+        } else if self.model_space {
+            (mesh.positions()[i], mesh.normals()[i])
+        } else {
+            let n = self.normal_matrix.transform(mesh.normals()[i]).normalize_or_zero();
+            (self.model.transform_point3(mesh.positions()[i]), n)
+        };
         let input = VertexInput {
             position,
             normal,
@@ -95,18 +94,11 @@ impl<E: Effect> VertexStage<'_, E> {
 
     /// Transforms mesh vertex `i` into a stored vertex: projected and
     /// snapped if it is inside the near/far planes and the guard band,
-    /// otherwise flagged. The world position is computed once, for both
-    /// the projection and the lighting.
+    /// otherwise flagged.
     #[inline]
     pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        let p = mesh.positions()[i];
-        let (clip, world) = if E::LIT_VERTICES {
-            let w = self.model.transform_point3(p);
-            (self.view_proj.transform_point(w), w)
-        } else {
-            (self.mvp.transform_point(p), Vec3::ZERO)
-        };
-        let attrs = self.varyings_at::<C, V>(mesh, i, world);
+        let clip = self.clip_position(mesh.positions()[i]);
+        let attrs = self.varyings::<C, V>(mesh, i);
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }
 }
@@ -127,9 +119,12 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
         }
     }
     if flags == 0 {
-        let w = to_window(v, width, height);
-        if let (Some(x), Some(y)) = (snap(w.x as f32, subpixel_bits), snap(w.y as f32, subpixel_bits)) {
-            return ScreenVertex { x, y, z: w.z, q: w.q, attrs: v.attrs };
+        // The same arithmetic as `clip::to_window`, kept in f32 (its f64
+        // result would only be rounded back).
+        let q = 1.0 / c.w;
+        let (x, y) = ((c.x * q + 1.0) * 0.5 * width, (1.0 - c.y * q) * 0.5 * height);
+        if let (Some(x), Some(y)) = (snap(x, subpixel_bits), snap(y, subpixel_bits)) {
+            return ScreenVertex { x, y, z: c.z * q, q, attrs: v.attrs };
         }
         flags |= OUTSIDE_GUARD;
     }

@@ -175,6 +175,42 @@ impl Mat4 {
         super::sqrt(col(0).max(col(1)).max(col(2)))
     }
 
+    /// If this is a similarity (rotation, uniform scale `s > 0` and
+    /// translation, within a relative tolerance of 1e-4), its scale.
+    /// Lighting can then be done in model space: angles are preserved.
+    pub fn similarity_scale(&self) -> Option<f32> {
+        let m = &self.m;
+        let col = |c: usize| Vec3::new(m[0][c], m[1][c], m[2][c]);
+        let (x, y, z) = (col(0), col(1), col(2));
+        let s2 = x.length_squared();
+        let tol = s2 * 1e-4;
+        let ok = s2 > 0.0
+            && (y.length_squared() - s2).abs() <= tol
+            && (z.length_squared() - s2).abs() <= tol
+            && x.dot(y).abs() <= tol
+            && y.dot(z).abs() <= tol
+            && z.dot(x).abs() <= tol
+            && x.cross(y).dot(z) > 0.0
+            && m[3] == [0.0, 0.0, 0.0, 1.0];
+        ok.then(|| super::sqrt(s2))
+    }
+
+    /// The inverse of a similarity with scale `s` (see
+    /// [`Mat4::similarity_scale`]): `(1/s²) Mᵀ` on the 3×3 part.
+    pub fn similarity_inverse(&self, s: f32) -> Mat4 {
+        let m = &self.m;
+        let k = 1.0 / (s * s);
+        let mut r = [[0.0f32; 4]; 4];
+        for (i, row) in r.iter_mut().take(3).enumerate() {
+            for (j, cell) in row.iter_mut().take(3).enumerate() {
+                *cell = m[j][i] * k;
+            }
+            row[3] = -(row[0] * m[0][3] + row[1] * m[1][3] + row[2] * m[2][3]);
+        }
+        r[3][3] = 1.0;
+        Mat4 { m: r }
+    }
+
     /// True if every entry is finite.
     pub fn is_finite(&self) -> bool {
         self.m.iter().flatten().all(|v| v.is_finite())
@@ -233,6 +269,19 @@ mod tests {
     fn singular_normal_matrix_is_zero_not_nan() {
         let m = Mat4::scaling(Vec3::new(1.0, 0.0, 1.0));
         assert_eq!(m.normal_matrix(), Mat3::ZERO);
+    }
+
+    #[test]
+    fn similarities_are_recognized_and_inverted() {
+        let m =
+            Mat4::translation(Vec3::new(1.0, -2.0, 3.0)) * Mat4::rotation_y(0.7) * Mat4::rotation_x(-0.3) * Mat4::scaling(Vec3::ONE * 2.5);
+        let s = m.similarity_scale().unwrap();
+        assert!((s - 2.5).abs() < 1e-5);
+        let p = Vec3::new(0.3, 0.9, -1.7);
+        assert!(close(m.similarity_inverse(s).transform_point3(m.transform_point3(p)), p));
+        assert_eq!(Mat4::scaling(Vec3::new(1.0, 2.0, 1.0)).similarity_scale(), None);
+        assert_eq!(Mat4::scaling(Vec3::new(-1.0, 1.0, 1.0)).similarity_scale(), None); // mirror
+        assert_eq!(Mat4::scaling(Vec3::ZERO).similarity_scale(), None);
     }
 
     #[test]

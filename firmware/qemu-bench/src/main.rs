@@ -51,37 +51,55 @@ fn selected(scene: &str, mode: &str) -> bool {
 
 const TARGET: &str = if cfg!(target_abi = "eabihf") { "m4f" } else { "m0" };
 
-/// The cost of the sink alone: the same 15 strips of 320×16 pixels
-/// through `FrameChecksum`, which the frame measurement includes.
-fn sink_cost(timer: &mut Timer) -> Option<u32> {
-    let strip = [Rgb565::BLACK; 320 * 16];
-    let mut sink = FrameChecksum::<Rgb565>::new(320, 240);
-    timer.start();
-    for s in 0..15 {
-        let area = Rectangle::new(Point::new(0, s * 16), Size::new(320, 16));
-        let Ok(()) = sink.fill_contiguous(&area, strip.iter().copied());
-    }
-    let n = timer.instructions();
-    core::hint::black_box(sink.sum);
-    n
+/// Wraps the checksum sink and accumulates the instructions spent inside
+/// it, so that the frame's own cost can exclude them.
+struct TimedSink {
+    inner: FrameChecksum<Rgb565>,
+    ticks: u32,
 }
 
-fn run<S: Settings>(timer: &mut Timer, mode: &str, sink: u32) {
+impl OriginDimensions for TimedSink {
+    fn size(&self) -> Size {
+        self.inner.size()
+    }
+}
+
+impl DrawTarget for TimedSink {
+    type Color = Rgb565;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
+        let t0 = cortex_m::peripheral::SYST::get_current();
+        let r = self.inner.draw_iter(pixels);
+        self.ticks += t0.wrapping_sub(cortex_m::peripheral::SYST::get_current()) & 0x00FF_FFFF;
+        r
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error> {
+        let t0 = cortex_m::peripheral::SYST::get_current();
+        let r = self.inner.fill_contiguous(area, colors);
+        self.ticks += t0.wrapping_sub(cortex_m::peripheral::SYST::get_current()) & 0x00FF_FFFF;
+        r
+    }
+}
+
+fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     let mut renderer: Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, 3, S> = Renderer::new(Rgb565::BLACK);
     let (camera, lights) = (demo_camera(), demo_lights());
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         if !selected(name, mode) {
             continue;
         }
-        let mut out = FrameChecksum::new(320, 240);
+        let mut out = TimedSink { inner: FrameChecksum::new(320, 240, Rgb565::BLACK), ticks: 0 };
         timer.start();
         let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
         let _ = draw_bench(&mut frame, i);
         let geometry = timer.instructions();
         let Ok(stats) = frame.finish(&mut out);
+        let sink = out.ticks * INSTRUCTIONS_PER_TICK;
         match (timer.instructions(), geometry) {
-            (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{}", name, mode, TARGET, n, sink, stats.queued, out.sum, g),
-            _ => hprintln!("{},{},{},overflow,{},{},{:08x},0", name, mode, TARGET, sink, stats.queued, out.sum),
+            (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{}", name, mode, TARGET, n, sink, stats.queued, out.inner.sum, g),
+            _ => hprintln!("{},{},{},overflow,{},{},{:08x},0", name, mode, TARGET, sink, stats.queued, out.inner.sum),
         }
     }
 }
@@ -94,10 +112,9 @@ fn main() -> ! {
     syst.set_reload(0x00FF_FFFF);
     syst.enable_counter();
     let mut timer = Timer(syst);
-    let sink = sink_cost(&mut timer).unwrap_or(0);
     hprintln!("scene,mode,target,instructions,sink_instructions,queued,checksum,geometry_instructions");
-    run::<soft3d::FixedPoint>(&mut timer, "fixed", sink);
-    run::<soft3d::FloatingPoint>(&mut timer, "f32", sink);
+    run::<soft3d::FixedPoint>(&mut timer, "fixed");
+    run::<soft3d::FloatingPoint>(&mut timer, "f32");
     debug::exit(debug::EXIT_SUCCESS);
     loop {
         cortex_m::asm::wfi();
