@@ -1,1 +1,0 @@
-//! The `.babylon` scene loader (placeholder, being written).
