@@ -9,6 +9,7 @@
 
 use crate::math::{Interp, Vec2, Vec3};
 use crate::scene::Lighting;
+use crate::texture::{Filter, Nearest, Repeat, Texture, Wrap};
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
 /// The color types the renderer draws in: the RGB colors of
@@ -36,7 +37,7 @@ macro_rules! impl_color {
 impl_color!(Rgb565, Bgr565, Rgb555, Bgr555, Rgb666, Bgr666, Rgb888, Bgr888);
 
 /// Most varyings any effect may ask for.
-pub const MAX_VARYINGS: usize = 4;
+pub const MAX_VARYINGS: usize = 8;
 
 /// The range of a color-channel varying whose channel is at most `max`:
 /// its integer part is the channel.
@@ -69,7 +70,7 @@ pub struct FaceInput {
 }
 
 /// A way of coloring pixels. See the [module docs](self).
-pub trait Effect: Copy + 'static {
+pub trait Effect: Copy {
     /// Number of interpolated values (at most [`MAX_VARYINGS`]).
     const VARYINGS: usize;
     /// Whether [`Effect::vertex`] uses the lights (and so the world-space
@@ -85,7 +86,17 @@ pub trait Effect: Copy + 'static {
     /// triangle's planes and, where rounding could leave the range, clamps
     /// the ends of every span. The default: red, green, blue channels of `C`.
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
-        [channel_range(C::MAX_R), channel_range(C::MAX_G), channel_range(C::MAX_B), (0.0, 0.0)]
+        let mut r = [(0.0, 0.0); MAX_VARYINGS];
+        r[..3].copy_from_slice(&[channel_range(C::MAX_R), channel_range(C::MAX_G), channel_range(C::MAX_B)]);
+        r
+    }
+
+    /// For each varying, the period by which it may be shifted without
+    /// changing the image (a repeating texture's size), or 0. The
+    /// rasterizer shifts each triangle's values near zero, so that huge
+    /// texture coordinates keep their precision.
+    fn periods(&self) -> [f32; MAX_VARYINGS] {
+        [0.0; MAX_VARYINGS]
     }
 
     /// Varyings of one vertex, for display color type `C`.
@@ -96,7 +107,7 @@ pub trait Effect: Copy + 'static {
     /// triangle), the interpolated varyings and the color already there
     /// (for effects that blend; the others ignore it and the load is
     /// optimized away).
-    fn shade<C: Color, S: Interp>(face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
+    fn shade<C: Color, S: Interp>(&self, face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
 }
 
 /// The first `V` varyings `effect` computes for one vertex (the renderer
@@ -125,7 +136,9 @@ fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
 #[inline]
 fn rgb_varyings<C: Color>(c: [f32; 3]) -> [f32; MAX_VARYINGS] {
     let scale = |v: f32, max: u8| v * (max as f32 * (1.0 / 255.0)) + 0.5;
-    [scale(c[0], C::MAX_R), scale(c[1], C::MAX_G), scale(c[2], C::MAX_B), 0.0]
+    let mut v = [0.0; MAX_VARYINGS];
+    v[..3].copy_from_slice(&[scale(c[0], C::MAX_R), scale(c[1], C::MAX_G), scale(c[2], C::MAX_B)]);
+    v
 }
 
 #[inline]
@@ -155,7 +168,7 @@ impl Effect for Flat {
         to_rgb888(lit(lights.diffuse(f.position, f.normal), f.color))
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(face: C, _: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, face: C, _: &[S; MAX_VARYINGS], _: C) -> C {
         face
     }
 }
@@ -176,7 +189,7 @@ impl Effect for Gouraud {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(_: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
     }
 }
@@ -198,7 +211,7 @@ impl Effect for VertexColor {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(_: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
     }
 }
@@ -223,8 +236,111 @@ impl Effect for FragmentCount {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(_: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
         let up = |v: u8, max: u8| if v < max { v + 1 } else { max };
         C::from_channels(up(dst.r(), C::MAX_R), up(dst.g(), C::MAX_G), up(dst.b(), C::MAX_B))
+    }
+}
+
+/// A channel of `from_max` levels rescaled to `to_max` levels, rounded
+/// (free when the depths match, as for an RGB565 texture on an RGB565
+/// display).
+#[inline(always)]
+fn rescale(v: u32, from_max: u32, to_max: u8) -> u8 {
+    if from_max == to_max as u32 {
+        v as u8
+    } else {
+        ((v * to_max as u32 + from_max / 2) / from_max) as u8
+    }
+}
+
+/// A texture modulated by the lit material color: Gouraud lighting (N·L
+/// per vertex, interpolated) times the texel, which `F` filters and `W`
+/// wraps. Texture coordinates are interpolated in texel units. Use it with
+/// [`PerPixel`](crate::material::PerPixel) or
+/// [`PerSpan`](crate::material::PerSpan) so the texture does not swim.
+///
+/// Varyings: `u · width`, `v · height`, then the lit color's red, green
+/// and blue in `[0, 256)` (5 in all, so the renderer needs `V >= 5`).
+pub struct Textured<'a, F = Nearest, W = Repeat> {
+    /// The texture.
+    pub texture: Texture<'a>,
+    _modes: core::marker::PhantomData<(F, W)>,
+}
+
+// Not derived: the marker types need not be `Copy` themselves.
+impl<F, W> Clone for Textured<'_, F, W> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<F, W> Copy for Textured<'_, F, W> {}
+impl<F, W> core::fmt::Debug for Textured<'_, F, W> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Textured").field("texture", &self.texture).finish()
+    }
+}
+
+impl<'a, F: Filter, W: Wrap> Textured<'a, F, W> {
+    /// The effect for `texture`.
+    pub const fn new(texture: Texture<'a>) -> Self {
+        Self { texture, _modes: core::marker::PhantomData }
+    }
+}
+
+/// Range of a texture coordinate in texel units: what 16.16 fixed point
+/// holds, with room for a span's steps.
+const TEXEL_RANGE: (f32, f32) = (-30_000.0, 30_000.0);
+/// Range of a light channel: its integer part scales a texel by `(l + 1) / 256`.
+const LIGHT_RANGE: (f32, f32) = (0.0, 255.996);
+
+impl<F: Filter, W: Wrap> Effect for Textured<'_, F, W> {
+    const VARYINGS: usize = 5;
+    const LIT_VERTICES: bool = true;
+    const USES_FACE: bool = false;
+    const NAME: &'static str = "textured";
+
+    fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
+        let mut r = [(0.0, 0.0); MAX_VARYINGS];
+        r[..5].copy_from_slice(&[TEXEL_RANGE, TEXEL_RANGE, LIGHT_RANGE, LIGHT_RANGE, LIGHT_RANGE]);
+        r
+    }
+
+    fn periods(&self) -> [f32; MAX_VARYINGS] {
+        let mut p = [0.0; MAX_VARYINGS];
+        if W::PERIODIC {
+            p[0] = self.texture.width() as f32;
+            p[1] = self.texture.height() as f32;
+        }
+        p
+    }
+
+    fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
+        let l = lit(lights.diffuse(v.position, v.normal), v.color);
+        let k = LIGHT_RANGE.1 / 255.0;
+        let mut out = [0.0; MAX_VARYINGS];
+        out[..5].copy_from_slice(&[
+            v.uv.x * self.texture.width() as f32,
+            v.uv.y * self.texture.height() as f32,
+            l[0] * k,
+            l[1] * k,
+            l[2] * k,
+        ]);
+        out
+    }
+
+    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
+        Rgb888::BLACK
+    }
+
+    #[inline(always)]
+    fn shade<C: Color, S: Interp>(&self, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+        let (r, g, b) = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16());
+        let light = |t: u32, l: S| (t * (l.channel() as u32 + 1)) >> 8;
+        C::from_channels(
+            rescale(light(r, v[2]), 31, C::MAX_R),
+            rescale(light(g, v[3]), 63, C::MAX_G),
+            rescale(light(b, v[4]), 31, C::MAX_B),
+        )
     }
 }

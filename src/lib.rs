@@ -58,6 +58,7 @@ pub mod renderer;
 pub mod scene;
 pub mod scenes;
 pub mod settings;
+pub mod texture;
 pub mod tri;
 pub mod vertex;
 

@@ -17,10 +17,14 @@ pub enum Cull {
     Back,
 }
 
-/// How varyings are interpolated across a triangle.
+/// How varyings are interpolated across a triangle: [`Affine`],
+/// [`PerSpan`] or [`PerPixel`].
 pub trait Perspective: 'static {
-    /// Whether values are divided by the interpolated `1/w` per pixel.
+    /// Whether values are divided by the interpolated `1/w`.
     const CORRECT: bool;
+    /// With `CORRECT`: pixels per exactly divided segment, values linear in
+    /// between (1 = every pixel).
+    const SPAN: u32;
     /// Name for reports.
     const NAME: &'static str;
 }
@@ -30,6 +34,7 @@ pub trait Perspective: 'static {
 pub struct Affine;
 impl Perspective for Affine {
     const CORRECT: bool = false;
+    const SPAN: u32 = 1;
     const NAME: &'static str = "affine";
 }
 
@@ -39,7 +44,22 @@ impl Perspective for Affine {
 pub struct PerPixel;
 impl Perspective for PerPixel {
     const CORRECT: bool = true;
+    const SPAN: u32 = 1;
     const NAME: &'static str = "exact";
+}
+
+/// Perspective-correct at every `N`-th pixel of a span (and at its first),
+/// linear in between: one reciprocal per `N` pixels. `N` is a power of two
+/// from 2 to 256.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PerSpan<const N: u32>;
+impl<const N: u32> Perspective for PerSpan<N> {
+    const CORRECT: bool = true;
+    const SPAN: u32 = {
+        assert!(N.is_power_of_two() && N >= 2 && N <= 256, "PerSpan<N> needs a power of two from 2 to 256");
+        N
+    };
+    const NAME: &'static str = "span";
 }
 
 /// Depth buffer use.

@@ -274,8 +274,13 @@ struct Shape {
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
 #[inline(never)]
-pub fn rasterize<C, S, E, P, D, const V: usize>(target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, subpixel_bits: u32)
-where
+pub fn rasterize<C, S, E, P, D, const V: usize>(
+    target: &mut StripTarget<'_, C>,
+    effect: &E,
+    tri: [&ScreenVertex<V>; 3],
+    face: C,
+    subpixel_bits: u32,
+) where
     C: Color,
     S: Interp,
     E: Effect,
@@ -339,8 +344,18 @@ where
     let n = E::VARYINGS.min(V);
     let mut vary = [z; MAX_VARYINGS];
     let ranges = E::ranges::<C>();
+    let periods = effect.periods();
+    let mut bounds = [(S::default(), S::default()); MAX_VARYINGS];
     for (i, p) in vary.iter_mut().enumerate().take(n) {
-        *p = Plane::new(&shape, a.attrs[i] * qa, b.attrs[i] * qb, c.attrs[i] * qc, ranges[i]);
+        let (mut va, mut vb, mut vc) = (a.attrs[i], b.attrs[i], c.attrs[i]);
+        if periods[i] > 0.0 {
+            // Shift periodic values (texture coordinates) by whole periods
+            // to start near zero: large coordinates keep their precision.
+            let shift = floor(va.min(vb).min(vc) / periods[i]) * periods[i];
+            (va, vb, vc) = (va - shift, vb - shift, vc - shift);
+        }
+        *p = Plane::new(&shape, va * qa, vb * qb, vc * qc, ranges[i]);
+        bounds[i] = (S::from_f32(ranges[i].0), S::from_f32(ranges[i].1));
     }
     // With a wrapping scalar, a plane whose rounded gradients leave its
     // range at a vertex takes the careful path (clamped span ends).
@@ -395,7 +410,7 @@ where
                 for i in 0..n {
                     (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
                 }
-                span::<C, S, E, P, D>(color, depths, zs, zd, vals, &steps, qs, qd, face);
+                span::<C, S, E, P, D>(color, depths, effect, zs, zd, vals, &steps, qs, qd, face, &bounds);
             } else {
                 let (k, j) = (x0 - x_base, y - y_start);
                 for i in 0..n {
@@ -403,7 +418,7 @@ where
                 }
                 let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
                 let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
-                span::<C, S, E, P, D>(color, depths, zs, z.dx, vals, &v_dx, qs, q.dx, face);
+                span::<C, S, E, P, D>(color, depths, effect, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
             }
         }
         long.step();
@@ -411,14 +426,26 @@ where
     }
 }
 
+/// `floor` for any finite `f32` (values from 2^23 up are integers).
+#[inline]
+fn floor(v: f32) -> f32 {
+    if v.abs() < 8_388_608.0 {
+        floor_f32(v)
+    } else {
+        v
+    }
+}
+
 /// The inner loop: one row of one triangle. No branch depends on a feature
 /// at run time; `P` and `D` are constants here, and every value is known
-/// to be in range, so nothing is clamped per pixel.
+/// to be in range, so nothing is clamped per pixel (except after a
+/// perspective division, whose rounding the planes cannot bound).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn span<C, S, E, P, D>(
     color: &mut [C],
     depth: &mut [u16],
+    effect: &E,
     mut z: S,
     z_dx: S,
     mut vals: [S; MAX_VARYINGS],
@@ -426,6 +453,7 @@ fn span<C, S, E, P, D>(
     mut q: S,
     q_dx: S,
     face: C,
+    bounds: &[(S, S); MAX_VARYINGS],
 ) where
     C: Color,
     S: Interp,
@@ -433,22 +461,59 @@ fn span<C, S, E, P, D>(
     P: Perspective,
     D: DepthMode,
 {
+    // Values divided by the interpolated q, clamped to their ranges.
+    let divide = |v: &[S; MAX_VARYINGS], q: S| {
+        let w = q.recip();
+        let mut out = *v;
+        for i in 0..E::VARYINGS {
+            out[i] = v[i].mul(w).clamp_to(bounds[i].0, bounds[i].1);
+        }
+        out
+    };
+    if P::CORRECT && P::SPAN > 1 {
+        // Exact at the start of every segment of SPAN pixels (and at the
+        // span's end), linear in between.
+        let mut cur = divide(&vals, q);
+        let len = color.len();
+        let mut start = 0;
+        while start < len {
+            let seg = (len - start).min(P::SPAN as usize);
+            let q_end = q.add_mul(q_dx, seg as i32);
+            let mut v_end = vals;
+            for i in 0..E::VARYINGS {
+                v_end[i] = vals[i].add_mul(v_dx[i], seg as i32);
+            }
+            let end = divide(&v_end, q_end);
+            let mut step = [S::default(); MAX_VARYINGS];
+            for i in 0..E::VARYINGS {
+                step[i] = end[i].sub(cur[i]).div_int(seg as i32);
+            }
+            let pixels = color[start..start + seg].iter_mut().zip(depth[start..start + seg].iter_mut());
+            for (px, zb) in pixels {
+                let zq = z.depth16();
+                if !D::TEST || zq < *zb {
+                    if D::WRITE {
+                        *zb = zq;
+                    }
+                    *px = effect.shade(face, &cur, *px);
+                }
+                z = z.add(z_dx);
+                for i in 0..E::VARYINGS {
+                    cur[i] = cur[i].add(step[i]);
+                }
+            }
+            (vals, q, cur) = (v_end, q_end, end);
+            start += seg;
+        }
+        return;
+    }
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
         let zq = z.depth16();
         if !D::TEST || zq < *zb {
             if D::WRITE {
                 *zb = zq;
             }
-            *px = if P::CORRECT {
-                let w = q.recip();
-                let mut v = vals;
-                for x in v.iter_mut().take(E::VARYINGS) {
-                    *x = x.mul(w);
-                }
-                E::shade(face, &v, *px)
-            } else {
-                E::shade(face, &vals, *px)
-            };
+            *px = if P::CORRECT { effect.shade(face, &divide(&vals, q), *px) } else { effect.shade(face, &vals, *px) };
         }
         if D::TEST || D::WRITE {
             z = z.add(z_dx);

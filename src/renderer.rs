@@ -139,7 +139,7 @@ where
     D: DepthMode,
 {
     fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C) {
-        raster::rasterize::<C, S::Interp, E, P, D, V>(target, tri, face, S::SUBPIXEL_BITS)
+        raster::rasterize::<C, S::Interp, E, P, D, V>(target, &self.effect, tri, face, S::SUBPIXEL_BITS)
     }
 }
 

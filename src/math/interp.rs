@@ -45,6 +45,9 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// The integer part as a color channel. The caller keeps the value in
     /// `[0, 256)`; outside it the result wraps (fixed) or saturates (`f32`).
     fn channel(self) -> u8;
+    /// The value times 2^16 as an integer (saturating for `f32`): texture
+    /// coordinates with 16 fractional bits.
+    fn to_bits16(self) -> i32;
     /// A depth value (see [`Interp::DEPTH_SCALE`]) as stored depth, under
     /// the same contract as [`Interp::channel`] for `[0, 65536)`.
     fn depth16(self) -> u16;
@@ -120,6 +123,10 @@ impl Interp for f32 {
     fn channel(self) -> u8 {
         // `as` saturates and maps NaN to 0.
         self as u8
+    }
+    #[inline(always)]
+    fn to_bits16(self) -> i32 {
+        (self * 65536.0) as i32
     }
     #[inline(always)]
     fn depth16(self) -> u16 {
@@ -201,6 +208,10 @@ impl Interp for Fixed {
     #[inline(always)]
     fn channel(self) -> u8 {
         (self.to_bits() >> Fixed::FRAC_BITS) as u8
+    }
+    #[inline(always)]
+    fn to_bits16(self) -> i32 {
+        self.to_bits()
     }
     #[inline(always)]
     fn depth16(self) -> u16 {
