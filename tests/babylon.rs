@@ -79,7 +79,8 @@ fn monkey_loads_with_its_material_camera_and_light() {
     assert_eq!(mesh.positions()[0], Vec3::new(-0.4688, 0.3517, -0.7136));
     assert_close(mesh.normals()[0], Vec3::new(-0.6826, 0.1047, -0.7232).normalize_or_zero(), 1e-6);
     assert_eq!(mesh.uvs().unwrap()[0], Vec2::new(0.4891, 0.8913));
-    assert_eq!(&mesh.indices()[..6], &[0, 1, 2, 2, 3, 0]);
+    // The file's triangles are [0, 1, 2], [2, 3, 0], rewound for soft3d.
+    assert_eq!(&mesh.indices()[..6], &[0, 2, 1, 2, 0, 3]);
     assert!(mesh.normals().iter().all(|n| (n.length() - 1.0).abs() < 1e-5));
 
     let material = scene.mesh_material(0).unwrap();
@@ -314,8 +315,10 @@ fn missing_normals_are_computed_from_the_triangles() {
     let json = r#"{"meshes":[{"positions":[0,0,0, 1,0,0, 0,1,0, 5,5,5],"indices":[0,2,1]}]}"#;
     let scene = small(json).unwrap();
     let n = scene.mesh(0).unwrap().normals();
-    // (b - a) × (c - a) for a = 0, b = (0,1,0), c = (1,0,0) is -z; vertex 3 is in no triangle.
-    assert_eq!(n, &[Vec3::new(0.0, 0.0, -1.0), Vec3::new(0.0, 0.0, -1.0), Vec3::new(0.0, 0.0, -1.0), Vec3::ZERO]);
+    // In the file (b - a) × (c - a) for a = 0, b = (0,1,0), c = (1,0,0) is
+    // -z, and Babylon's front side is the opposite one (its
+    // ComputeNormals gives +z); vertex 3 is in no triangle.
+    assert_eq!(n, &[Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, 1.0), Vec3::ZERO]);
 }
 
 #[test]
@@ -337,9 +340,10 @@ fn several_meshes_share_the_pools() {
     let c = scene.mesh(2).unwrap();
     assert_eq!(c.positions()[0], Vec3::new(0.0, 0.0, 3.0));
     assert_eq!(c.uvs().unwrap()[0], Vec2::new(0.5, 0.5));
-    assert_eq!(c.indices(), &[2, 1, 0]);
+    // Rewound: the last two corners of every triangle swapped.
+    assert_eq!(c.indices(), &[2, 0, 1]);
     let b = scene.mesh(1).unwrap();
-    assert_eq!(b.indices(), &[0, 1, 2, 1, 3, 2]);
+    assert_eq!(b.indices(), &[0, 2, 1, 1, 2, 3]);
 }
 
 // ---------------------------------------------------------------- transforms
@@ -843,7 +847,28 @@ fn hand_written_scenes_load() {
     assert_eq!(requirements(&json).unwrap(), Requirements { meshes: 2, materials: 0, lights: 0, vertices: 7, uvs: 3, indices: 9 });
     let scene = host(&json);
     assert_eq!(scene.mesh(0).unwrap().uvs().unwrap(), &[Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0)]);
-    assert_eq!(scene.mesh(1).unwrap().normals(), &[Vec3::new(0.0, 0.0, -1.0); 4]);
+    assert_eq!(scene.mesh(1).unwrap().normals(), &[Vec3::new(0.0, 0.0, 1.0); 4]);
     assert_eq!(scene.camera().unwrap().name.as_str(), "Second");
     assert_eq!((scene.skipped_lights(), scene.to_lights().point, scene.to_lights().directional), (1, None, None));
+}
+
+#[test]
+fn loaded_triangles_face_the_way_their_normals_point() {
+    // soft3d's meshes face the side (b - a) × (c - a) points to; after the
+    // loader rewinds Babylon's triangles that must agree with the normals
+    // the exporter wrote, or back-face culling would show the insides.
+    for name in ["monkey.babylon", "torus.babylon", "cube.babylon"] {
+        let Some(json) = asset(name) else { continue };
+        let scene = host(&json);
+        let mesh = scene.mesh(0).unwrap();
+        let (p, n) = (mesh.positions(), mesh.normals());
+        let (mut agree, mut total) = (0, 0);
+        for t in mesh.indices().chunks_exact(3) {
+            let [a, b, c] = [t[0], t[1], t[2]].map(usize::from);
+            let face = (p[b] - p[a]).cross(p[c] - p[a]);
+            total += 1;
+            agree += (face.dot(n[a] + n[b] + n[c]) > 0.0) as usize;
+        }
+        assert_eq!(agree, total, "{name}: {agree} of {total} triangles face along their normals");
+    }
 }

@@ -4,7 +4,10 @@
 use embedded_graphics::mock_display::MockDisplay;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use soft3d::effect::{FragmentCount, Gouraud, VertexColor};
-use soft3d::host::{load_png, Image};
+use soft3d::host::Image;
+
+mod common;
+use common::golden;
 use soft3d::material::DepthOff;
 use soft3d::math::{Mat4, Vec3};
 use soft3d::mesh::{Mesh, MeshData};
@@ -18,30 +21,6 @@ fn demo_image<S: Settings>(w: usize, h: usize, strip: usize, t: f32) -> Image<Rg
     let mut img = Image::new(w as u32, h as u32, Rgb565::BLACK);
     let Ok(_) = frame.finish(&mut img);
     img
-}
-
-/// Compares with `tests/golden/NAME.png`; `SOFT3D_BLESS=1` rewrites it.
-fn golden(name: &str, img: &Image<Rgb565>) {
-    let path = format!("{}/tests/golden/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    if std::env::var_os("SOFT3D_BLESS").is_some() {
-        img.save_png(&path).unwrap();
-        eprintln!("blessed {path}");
-        return;
-    }
-    let want = load_png(&path).unwrap_or_else(|e| panic!("{path}: {e} (run with SOFT3D_BLESS=1 to create it)"));
-    let got: Vec<Rgb888> = img.pixels.iter().map(|&c| c.into()).collect();
-    assert_eq!((want.width, want.height), (img.width, img.height));
-    let differ = got.iter().zip(&want.pixels).filter(|(a, b)| a != b).count();
-    if differ != 0 {
-        let out = std::env::temp_dir().join(format!("{name}-actual.png"));
-        img.save_png(&out).unwrap();
-        let ch = |a: u8, b: u8| a.abs_diff(b);
-        let worst = got.iter().zip(&want.pixels).map(|(a, b)| ch(a.r(), b.r()).max(ch(a.g(), b.g())).max(ch(a.b(), b.b()))).max();
-        panic!(
-            "{name}: {differ} pixels differ from {path} (largest channel difference {worst:?} of 255); actual image written to {}",
-            out.display()
-        );
-    }
 }
 
 #[test]

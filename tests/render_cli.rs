@@ -78,3 +78,72 @@ fn render_rejects_malformed_files_with_the_line_number() {
     let o = Command::new(&bin).args(["--bogus"]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
 }
+
+const ASSETS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/assets");
+
+/// Renders a scene file with `render`, returning the exit code and stderr.
+fn render_scene(bin: &PathBuf, input: &std::path::Path, out: &std::path::Path, extra: &[&str]) -> (Option<i32>, String) {
+    let o = Command::new(bin).arg(input).args(["-o", out.to_str().unwrap()]).args(extra).output().unwrap();
+    (o.status.code(), String::from_utf8_lossy(&o.stderr).into_owned())
+}
+
+#[test]
+fn render_draws_every_shared_scene_and_a_textured_turntable() {
+    let Some(bin) = render_bin() else {
+        eprintln!("SKIPPED: the render example is not built (run `cargo test --features simulator`)");
+        return;
+    };
+    let Ok(dir) = std::fs::read_dir(ASSETS) else {
+        println!("skipped: {ASSETS} is not available");
+        return;
+    };
+    let mut scenes: Vec<PathBuf> =
+        dir.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|e| e == "babylon")).collect();
+    scenes.sort();
+    assert!(!scenes.is_empty());
+    for scene in &scenes {
+        let out = tmp("scene.png");
+        let _ = std::fs::remove_file(&out);
+        let (code, err) = render_scene(&bin, scene, &out, &["--size", "160x120"]);
+        assert_eq!(code, Some(0), "{}: {err}", scene.display());
+        assert!(err.is_empty(), "{}: unexpected warnings: {err}", scene.display());
+        let img = soft3d::host::load_png(&out).unwrap();
+        let background = img.pixels[0];
+        let drawn = img.pixels.iter().filter(|&&p| p != background).count();
+        assert!(drawn > 300, "{}: only {drawn} pixels drawn", scene.display());
+    }
+    // A turntable of the textured monkey, into numbered frames.
+    let monkey = std::path::Path::new(ASSETS).join("monkey.babylon");
+    let out = tmp("spin.png");
+    let (code, err) =
+        render_scene(&bin, &monkey, &out, &["--size", "80x60", "--frames", "3", "--spin", "--persp", "span16", "--filter", "bilinear"]);
+    assert_eq!(code, Some(0), "{err}");
+    let frames: Vec<_> = (0..3).map(|i| soft3d::host::load_png(tmp(&format!("spin-{i:03}.png"))).unwrap().pixels).collect();
+    assert_ne!(frames[0], frames[1], "the model turns between frames");
+}
+
+#[test]
+fn broken_scenes_fail_with_a_message_and_status_1() {
+    let Some(bin) = render_bin() else {
+        eprintln!("SKIPPED: the render example is not built (run `cargo test --features simulator`)");
+        return;
+    };
+    for (text, expect) in [
+        ("{\"meshes\": [", "JSON"),
+        ("{\"meshes\": [{\"positions\": [0,0,0, 1,0,0], \"indices\": [0,1,2]}]}", "index"),
+        ("\u{0}\u{1}garbage", "JSON"),
+        ("{\"meshes\": [{\"positions\": [0,0,1e999], \"indices\": []}]}", "finite"),
+    ] {
+        let (input, out) = (tmp("bad.babylon"), tmp("bad-scene.png"));
+        let _ = std::fs::remove_file(&out);
+        std::fs::write(&input, text).unwrap();
+        let (code, err) = render_scene(&bin, &input, &out, &[]);
+        assert_eq!(code, Some(1), "{text}: {err}");
+        assert!(err.to_lowercase().contains(&expect.to_lowercase()), "{text}: {err}");
+        assert!(!out.exists());
+    }
+    let (code, err) = render_scene(&bin, &tmp("missing.babylon"), &tmp("x.png"), &[]);
+    assert_eq!(code, Some(1), "{err}");
+    let (code, _) = render_scene(&bin, &tmp("missing.babylon"), &tmp("x.png"), &["--persp", "sideways"]);
+    assert_eq!(code, Some(2));
+}

@@ -50,6 +50,10 @@
 //!   mesh without normals gets area-weighted vertex normals computed from
 //!   its triangles.
 //! - Texture coordinates are kept as in the file (Babylon's convention).
+//! - **Triangles are rewound**: Babylon's files wind front faces so that
+//!   `(b - a) × (c - a)` points into the surface (counter-clockwise as
+//!   seen from the front); [`Mesh`](crate::mesh::Mesh) expects it to point
+//!   out, so the loader swaps the last two indices of every triangle.
 //! - Materials (`diffuse`, `specular`, `specularPower`, `ambient`,
 //!   `emissive`, `alpha`, `backFaceCulling`, `diffuseTexture.name`), with
 //!   Babylon's `StandardMaterial` defaults for absent fields.
@@ -756,6 +760,13 @@ impl<const MESHES: usize, const MATERIALS: usize, const LIGHTS: usize, const VER
     fn finish_mesh(&mut self, mesh: usize, meta: MeshMeta) -> bool {
         let Some(g) = self.geometry(mesh) else { return false };
         let base = g.first_vertex;
+        // Babylon's front faces wind the other way round from soft3d's:
+        // in its files (b - a) × (c - a) points into the surface. Swapping
+        // two corners of every triangle makes it point out, as `Mesh` expects.
+        let Some(indices) = self.indices.get_mut(g.first_index..g.first_index + g.indices) else { return false };
+        for t in indices.chunks_exact_mut(3) {
+            t.swap(1, 2);
+        }
         if self.normals.len() == base {
             // No normals in the file: area-weighted face normals.
             for _ in 0..g.vertices {

@@ -6,8 +6,8 @@
 //!
 //! Winding: a triangle `(a, b, c)` faces the side its normal
 //! `(b - a) × (c - a)` points to. Seen from that side in the left-handed
-//! frame it is clockwise on screen, which is Babylon's front-face
-//! convention.
+//! frame it is clockwise on screen. (Babylon's files wind the other way;
+//! the [`babylon`](crate::babylon) loader rewinds them.)
 
 mod shapes;
 

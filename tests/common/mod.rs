@@ -119,3 +119,27 @@ pub fn diff(a: &[u8], b: &[u8], width: usize) -> String {
         .collect();
     format!("{} pixels differ, first: {}", a.iter().zip(b).filter(|(x, y)| x != y).count(), bad.join("; "))
 }
+
+/// Compares with `tests/golden/NAME.png`; `SOFT3D_BLESS=1` rewrites it.
+pub fn golden(name: &str, img: &Image<embedded_graphics::pixelcolor::Rgb565>) {
+    let path = format!("{}/tests/golden/{name}.png", env!("CARGO_MANIFEST_DIR"));
+    if std::env::var_os("SOFT3D_BLESS").is_some() {
+        img.save_png(&path).unwrap();
+        eprintln!("blessed {path}");
+        return;
+    }
+    let want = soft3d::host::load_png(&path).unwrap_or_else(|e| panic!("{path}: {e} (run with SOFT3D_BLESS=1 to create it)"));
+    let got: Vec<Rgb888> = img.pixels.iter().map(|&c| c.into()).collect();
+    assert_eq!((want.width, want.height), (img.width, img.height));
+    let differ = got.iter().zip(&want.pixels).filter(|(a, b)| a != b).count();
+    if differ != 0 {
+        let out = std::env::temp_dir().join(format!("{name}-actual.png"));
+        img.save_png(&out).unwrap();
+        let ch = |a: u8, b: u8| a.abs_diff(b);
+        let worst = got.iter().zip(&want.pixels).map(|(a, b)| ch(a.r(), b.r()).max(ch(a.g(), b.g())).max(ch(a.b(), b.b()))).max();
+        panic!(
+            "{name}: {differ} pixels differ from {path} (largest channel difference {worst:?} of 255); actual image written to {}",
+            out.display()
+        );
+    }
+}

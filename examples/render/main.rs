@@ -2,10 +2,25 @@
 //!
 //! ```text
 //! render INPUT -o OUT.png [--size WxH] [--strip N] [--subpixel-bits N]
-//!        [--effect unlit|flat|gouraud] [--cull none|back] [--interp fixed|f32]
-//!        [--coverage COV.png]
+//!        [--interp fixed|f32] [--effect ...] [--cull none|back]
+//!        [--coverage COV.png]                              (.tri input)
+//!        [--yaw DEG] [--pitch DEG] [--distance D] [--fov DEG]
+//!        [--persp exact|span16|affine] [--filter nearest|bilinear]
+//!        [--light file|head] [--frames N] [--spin]         (.babylon input)
 //! ```
-//! `INPUT` is a `.tri` file (see `soft3d::tri`): triangles in window
+//! A `.babylon` scene is drawn from its own camera and lights; `--yaw`,
+//! `--pitch` and `--distance` orbit the camera around the point it looks
+//! at instead (yaw 0 looks along +z, pitch up positive), `--fov` sets the
+//! vertical field of view, `--light head` replaces the file's lights by a
+//! headlight (ambient 0.15, diffuse 0.85 along the view). Textures named
+//! by the materials are read from beside the scene file (PNG or JPEG).
+//! `--effect auto` (default) textures the meshes that have a texture and
+//! texture coordinates and Gouraud-shades the rest; `gouraud` and `flat`
+//! force one effect. `--frames N --spin` renders a turntable of N frames
+//! around the vertical axis: into an animated GIF if OUT ends in `.gif`,
+//! else into OUT-000.png, OUT-001.png, …
+//!
+//! A `.tri` file (see `soft3d::tri`) holds triangles in window
 //! coordinates that enter the pipeline at triangle assembly. Vertex colors
 //! are interpolated perspective-correctly (using `w`) for `unlit` and
 //! `gouraud`; `flat` uses each triangle's first color. `--coverage` writes
@@ -25,6 +40,8 @@ use soft3d::math::{Fixed, Interp};
 use soft3d::tri::TriVertex;
 use soft3d::{Cull, HostRenderer, Lights, Material, Precision, Settings};
 
+mod scene;
+
 struct Options {
     input: String,
     output: String,
@@ -36,11 +53,12 @@ struct Options {
     cull: Cull,
     float: bool,
     coverage: Option<String>,
+    scene: scene::SceneOptions,
 }
 
 fn main() {
     let opts = parse_args().unwrap_or_else(|e| {
-        eprintln!("render: {e}\nusage: render INPUT -o OUT.png [--size WxH] [--strip N] [--subpixel-bits 0..8] [--effect unlit|flat|gouraud] [--cull none|back] [--interp fixed|f32] [--coverage COV.png]");
+        eprintln!("render: {e}\nusage: render INPUT -o OUT.png [--size WxH] [--strip N] [--subpixel-bits 0..8] [--interp fixed|f32] [--effect unlit|flat|gouraud|auto] [--cull none|back] [--coverage COV.png] [--yaw DEG] [--pitch DEG] [--distance D] [--fov DEG] [--persp exact|span16|affine] [--filter nearest|bilinear] [--light file|head] [--frames N] [--spin]");
         std::process::exit(2)
     });
     if let Err(e) = run(&opts) {
@@ -61,7 +79,9 @@ fn parse_args() -> Result<Options, String> {
         cull: Cull::None,
         float: false,
         coverage: None,
+        scene: scene::SceneOptions::default(),
     };
+    let mut effect_given = false;
     let mut args = std::env::args().skip(1);
     let value = |args: &mut dyn Iterator<Item = String>, flag: &str| args.next().ok_or(format!("{flag} needs a value"));
     while let Some(a) = args.next() {
@@ -75,7 +95,10 @@ fn parse_args() -> Result<Options, String> {
             }
             "--strip" => o.strip = Some(value(&mut args, &a)?.parse().map_err(|_| "--strip: expected a number of rows")?),
             "--subpixel-bits" => o.subpixel_bits = value(&mut args, &a)?.parse().map_err(|_| "--subpixel-bits: expected 0 to 8")?,
-            "--effect" => o.effect = value(&mut args, &a)?,
+            "--effect" => {
+                o.effect = value(&mut args, &a)?;
+                effect_given = true;
+            }
             "--cull" => {
                 o.cull = match value(&mut args, &a)?.as_str() {
                     "none" => Cull::None,
@@ -91,6 +114,11 @@ fn parse_args() -> Result<Options, String> {
                 }
             }
             "--coverage" => o.coverage = Some(value(&mut args, &a)?),
+            "--yaw" | "--pitch" | "--distance" | "--fov" | "--persp" | "--filter" | "--light" | "--frames" => {
+                let v = value(&mut args, &a)?;
+                o.scene.set(&a, &v)?;
+            }
+            "--spin" => o.scene.spin = true,
             s if s.starts_with('-') => return Err(format!("unknown option {s}")),
             s if o.input.is_empty() => o.input = s.to_string(),
             s => return Err(format!("unexpected argument {s}")),
@@ -102,7 +130,17 @@ fn parse_args() -> Result<Options, String> {
     if o.subpixel_bits > 8 {
         return Err("--subpixel-bits must be 0 to 8".into());
     }
-    if !["unlit", "flat", "gouraud"].contains(&o.effect.as_str()) {
+    if o.input.ends_with(".babylon") {
+        if !effect_given {
+            o.effect = "auto".into();
+        }
+        if !["auto", "flat", "gouraud"].contains(&o.effect.as_str()) {
+            return Err(format!("--effect {}: expected auto, flat or gouraud for a scene", o.effect));
+        }
+        if o.coverage.is_some() {
+            return Err("--coverage is only for .tri input".into());
+        }
+    } else if !["unlit", "flat", "gouraud"].contains(&o.effect.as_str()) {
         return Err(format!("--effect {}: expected unlit, flat or gouraud", o.effect));
     }
     if o.width == 0 || o.height == 0 || o.width > 16384 || o.height > 16384 {
@@ -115,8 +153,11 @@ fn parse_args() -> Result<Options, String> {
 }
 
 fn run(o: &Options) -> Result<(), String> {
+    if o.input.ends_with(".babylon") {
+        return scene::run(o);
+    }
     if !o.input.ends_with(".tri") {
-        return Err(format!("{}: unsupported input (expected a .tri file)", o.input));
+        return Err(format!("{}: unsupported input (expected a .tri or .babylon file)", o.input));
     }
     let text = std::fs::read_to_string(&o.input).map_err(|e| format!("{}: {e}", o.input))?;
     let tris: Vec<[TriVertex; 3]> = soft3d::tri::parse(&text).collect::<Result<_, _>>().map_err(|e| format!("{}: {e}", o.input))?;
