@@ -115,7 +115,9 @@ fn turntable(path: &str, frames: usize, out: &str, gif: Option<&str>) {
     if let Some(g) = gif {
         recorder.save(g).unwrap_or_else(|e| fail(&format!("cannot write {g}: {e}")));
     }
-    println!("rendered {frames} frames of {path} at {W}x{H} in {STRIP}-row strips (fixed-point, textures bilinear, perspective every 16 px)");
+    println!(
+        "rendered {frames} frames of {path} at {W}x{H} in {STRIP}-row strips (fixed-point, textures bilinear, perspective every 16 px)"
+    );
     println!("time per frame: {:.3} ms (host wall clock)", busy.as_secs_f64() * 1e3 / frames as f64);
     println!("wrote {out}{}", gif.map(|g| format!(" and {g}")).unwrap_or_default());
 }

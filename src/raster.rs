@@ -36,13 +36,17 @@ pub const fn guard(subpixel_bits: u32) -> i32 {
     1 << (28 - subpixel_bits)
 }
 
-/// Depth in [0, 1] maps to stored depth `floor(z * DEPTH_RANGE + 0.5)`:
-/// 0 to 65534, so that nothing drawn ever equals [`DEPTH_CLEAR`], and the
-/// half unit of margin absorbs interpolation rounding at the vertices.
+/// Depth z in [0, 1] (smaller nearer) is stored inverted, as
+/// `floor((1 - z) * DEPTH_RANGE + 1.5)`: 1 to 65535, larger nearer, so that
+/// a cleared buffer is all zeros (a renderer made with a black fill is
+/// zero-initialized and costs no flash in a `static`), nothing drawn ever
+/// equals [`DEPTH_CLEAR`], and the half unit of margin absorbs
+/// interpolation rounding at the vertices. "Nearer than stored" is then
+/// `new > stored`; ties keep the first fragment, like a "less" test on z.
 const DEPTH_RANGE: f32 = 65534.0;
 
 /// Cleared depth value (farther than anything drawable).
-pub const DEPTH_CLEAR: u16 = u16::MAX;
+pub const DEPTH_CLEAR: u16 = 0;
 
 /// A vertex in window space, ready for setup.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -61,7 +65,7 @@ pub struct ScreenVertex<const V: usize> {
 
 impl<const V: usize> ScreenVertex<V> {
     /// A placeholder vertex.
-    pub const ZERO: Self = Self { x: 0, y: 0, z: 0.0, q: 1.0, attrs: [0.0; V] };
+    pub const ZERO: Self = Self { x: 0, y: 0, z: 0.0, q: 0.0, attrs: [0.0; V] };
 }
 
 /// Snaps a window coordinate (pixels) to the sub-pixel grid, in units of
@@ -323,8 +327,8 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     let (x1, y1, x2, y2) = (ox1 as f32 * unit, oy1 as f32 * unit, ox2 as f32 * unit, oy2 as f32 * unit);
     let shape = Shape { x1, y1, x2, y2, inv_area: 1.0 / (x1 * y2 - y1 * x2), ox1, oy1, ox2, oy2 };
 
-    let depth_range = (0.0, (DEPTH_RANGE + 0.999) * S::DEPTH_SCALE);
-    let depth = |v: &ScreenVertex<V>| (v.z * DEPTH_RANGE + 0.5) * S::DEPTH_SCALE;
+    let depth_range = (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE);
+    let depth = |v: &ScreenVertex<V>| ((1.0 - v.z) * DEPTH_RANGE + 1.5) * S::DEPTH_SCALE;
     let z = Plane::<S>::new(&shape, depth(a), depth(b), depth(c), depth_range);
     // Perspective-correct varyings are interpolated as value * q', with
     // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
@@ -491,7 +495,7 @@ fn span<C, S, E, P, D>(
             let pixels = color[start..start + seg].iter_mut().zip(depth[start..start + seg].iter_mut());
             for (px, zb) in pixels {
                 let zq = z.depth16();
-                if !D::TEST || zq < *zb {
+                if !D::TEST || zq > *zb {
                     if D::WRITE {
                         *zb = zq;
                     }
@@ -509,7 +513,7 @@ fn span<C, S, E, P, D>(
     }
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
         let zq = z.depth16();
-        if !D::TEST || zq < *zb {
+        if !D::TEST || zq > *zb {
             if D::WRITE {
                 *zb = zq;
             }

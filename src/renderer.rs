@@ -13,7 +13,7 @@
 //! ```text
 //! W·STRIP·(size_of::<C>() + 2)     color and depth strips
 //! + VERTS·(16 + 4·V)               transformed vertices
-//! + TRIS·16                        queued triangles
+//! + TRIS·12                        queued triangles
 //! + 2·H                            per-strip list heads
 //! + size_of::<C>()                 the background the strips hold
 //! ```
@@ -42,19 +42,19 @@ pub const MAX_DRAW_CALLS: usize = 32;
 
 const NONE: u16 = u16::MAX;
 
-/// A queued triangle: indices into the frame's vertex buffer, its row
-/// range, the per-triangle color, and the link of its strip list.
+/// A queued triangle: indices into the frame's vertex buffer, the link of
+/// its strip list and the per-triangle color (12 bytes; its rows are
+/// recomputed from its vertices when needed).
 #[derive(Clone, Copy, Debug)]
 struct TriRecord {
     v: [u16; 3],
     next: u16,
-    first_row: u16,
-    end_row: u16,
-    face: u32,
+    face: [u8; 3],
 }
 
 impl TriRecord {
-    const EMPTY: Self = Self { v: [0; 3], next: NONE, first_row: 0, end_row: 0, face: 0 };
+    // All zeros, so that a black renderer is zero-initialized.
+    const EMPTY: Self = Self { v: [0; 3], next: 0, face: [0; 3] };
 }
 
 /// Why a draw call was refused. The frame is left as it was before the
@@ -196,7 +196,7 @@ where
             depth: [[DEPTH_CLEAR; W]; STRIP],
             vertices: [ScreenVertex::ZERO; VERTS],
             triangles: [TriRecord::EMPTY; TRIS],
-            heads: [NONE; H],
+            heads: [0; H],
             clean: fill,
             _settings: PhantomData,
         }
@@ -284,7 +284,7 @@ where
             depth: std::vec![DEPTH_CLEAR; width * strip],
             vertices: std::vec![ScreenVertex::ZERO; vertices],
             triangles: std::vec![TriRecord::EMPTY; triangles],
-            heads: std::vec![NONE; height],
+            heads: std::vec![0; height],
             clean: fill,
             width,
             height,
@@ -609,7 +609,7 @@ where
             self.stats.off_screen += 1;
             return Ok(());
         }
-        let rec = TriRecord { v: corners, next: NONE, first_row: first as u16, end_row: end as u16, face: pack(face) };
+        let rec = TriRecord { v: corners, next: NONE, face: [face.r(), face.g(), face.b()] };
         let capacity = self.b.triangles.len();
         *self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })? = rec;
         self.n_triangles += 1;
@@ -622,12 +622,15 @@ where
         let Frame { b, n_triangles, draws, background, stats, .. } = self;
         let (width, height, strip_rows) = (b.width, b.height, b.strip);
         let tris = &mut b.triangles[..n_triangles];
+        let (vs, bits) = (&*b.vertices, S::SUBPIXEL_BITS);
         let strips = height.div_ceil(strip_rows);
         // Bin by first strip; pushing in reverse keeps each list in
         // submission order.
         b.heads[..strips].fill(NONE);
         for i in (0..tris.len()).rev() {
-            let s = tris[i].first_row as usize / strip_rows;
+            let v = tris[i].v;
+            let top = vs[v[0] as usize].y.min(vs[v[1] as usize].y).min(vs[v[2] as usize].y);
+            let s = first_row_at_or_below(top, bits).clamp(0, height as i32 - 1) as usize / strip_rows;
             tris[i].next = b.heads[s];
             b.heads[s] = i as u16;
         }
@@ -668,8 +671,9 @@ where
                 }
                 let vs = &b.vertices;
                 let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
-                draws[draw].0.rasterize(&mut strip, tri, C::from(unpack(rec.face)));
-                if rec.end_row as usize > y0 + rows {
+                draws[draw].0.rasterize(&mut strip, tri, C::from(Rgb888::new(rec.face[0], rec.face[1], rec.face[2])));
+                let bottom = tri[0].y.max(tri[1].y).max(tri[2].y);
+                if first_row_at_or_below(bottom, bits) > (y0 + rows) as i32 {
                     tris[i as usize].next = NONE;
                     if next_tail == NONE {
                         next_head = i;
@@ -705,12 +709,4 @@ fn clean_columns<C: Copy>(strip: StripTarget<'_, C>, background: C) {
         c[x0..x1].fill(background);
         z[x0..x1].fill(DEPTH_CLEAR);
     }
-}
-
-fn pack(c: Rgb888) -> u32 {
-    (c.r() as u32) << 16 | (c.g() as u32) << 8 | c.b() as u32
-}
-
-fn unpack(v: u32) -> Rgb888 {
-    Rgb888::new((v >> 16) as u8, (v >> 8) as u8, v as u8)
 }

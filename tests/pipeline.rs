@@ -222,7 +222,7 @@ fn depth_test_keeps_the_nearest_surface() {
 #[test]
 fn ram_formula_matches_size_of() {
     fn formula(w: usize, h: usize, strip: usize, verts: usize, tris: usize, v: usize, color: usize) -> usize {
-        let bytes = w * strip * (color + 2) + verts * (16 + 4 * v) + tris * 16 + 2 * h + color;
+        let bytes = w * strip * (color + 2) + verts * (16 + 4 * v) + tris * 12 + 2 * h + color;
         bytes.div_ceil(4) * 4
     }
     assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200>>(), formula(320, 240, 16, 1000, 1200, 3, 2));
