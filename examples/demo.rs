@@ -93,7 +93,7 @@ fn turntable(path: &str, frames: usize, out: &str, gif: Option<&str>) {
     let materials = scene.materials::<Bilinear, Repeat, PerSpan<16>>(EffectChoice::Auto);
     let camera = scene.camera_or_default();
     let lights = HostScene::headlight(&camera);
-    let mut renderer: soft3d::HostRenderer<Rgb565, 5, FixedPoint> =
+    let mut renderer: soft3d::HostRenderer<Rgb565, 6, FixedPoint> =
         soft3d::HostRenderer::new(W, H, STRIP, 8192, 8192, Rgb565::BLACK).unwrap_or_else(|e| fail(&e.to_string()));
     let mut image = Image::new(W as u32, H as u32, Rgb565::BLACK);
     let mut recorder = GifRecorder::new(W as u32, H as u32, 4);

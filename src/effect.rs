@@ -99,6 +99,14 @@ pub trait Effect: Copy {
         [0.0; MAX_VARYINGS]
     }
 
+    /// Per-draw values the span loop reads, converted to the scalar `S`
+    /// once per triangle (the lights, for per-pixel lighting); `()` for
+    /// most effects.
+    type Uniforms<S: Interp>: Copy;
+    /// The uniforms for a draw call lit by `lights` (in the space the
+    /// vertices were lit in) with material color `color`.
+    fn uniforms<S: Interp>(&self, lights: &Lighting, color: Rgb888) -> Self::Uniforms<S>;
+
     /// Varyings of one vertex, for display color type `C`.
     fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS];
     /// The per-triangle color.
@@ -107,7 +115,7 @@ pub trait Effect: Copy {
     /// triangle), the interpolated varyings and the color already there
     /// (for effects that blend; the others ignore it and the load is
     /// optimized away).
-    fn shade<C: Color, S: Interp>(&self, face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
+    fn shade<C: Color, S: Interp>(&self, u: &Self::Uniforms<S>, face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
 }
 
 /// The first `V` varyings `effect` computes for one vertex (the renderer
@@ -157,6 +165,8 @@ fn shade_rgb<C: Color, S: Interp>(v: &[S; MAX_VARYINGS]) -> C {
 pub struct Flat;
 
 impl Effect for Flat {
+    type Uniforms<S: Interp> = ();
+    fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 0;
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = true;
@@ -168,7 +178,7 @@ impl Effect for Flat {
         to_rgb888(lit(lights.diffuse(f.position, f.normal), f.color))
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(&self, face: C, _: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, face: C, _: &[S; MAX_VARYINGS], _: C) -> C {
         face
     }
 }
@@ -178,6 +188,8 @@ impl Effect for Flat {
 pub struct Gouraud;
 
 impl Effect for Gouraud {
+    type Uniforms<S: Interp> = ();
+    fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 3;
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
@@ -189,7 +201,7 @@ impl Effect for Gouraud {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(&self, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
     }
 }
@@ -200,6 +212,8 @@ impl Effect for Gouraud {
 pub struct VertexColor;
 
 impl Effect for VertexColor {
+    type Uniforms<S: Interp> = ();
+    fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 3;
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
@@ -211,7 +225,7 @@ impl Effect for VertexColor {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(&self, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
     }
 }
@@ -225,6 +239,8 @@ impl Effect for VertexColor {
 pub struct FragmentCount;
 
 impl Effect for FragmentCount {
+    type Uniforms<S: Interp> = ();
+    fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 0;
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
@@ -236,7 +252,7 @@ impl Effect for FragmentCount {
         Rgb888::BLACK
     }
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(&self, _: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
         let up = |v: u8, max: u8| if v < max { v + 1 } else { max };
         C::from_channels(up(dst.r(), C::MAX_R), up(dst.g(), C::MAX_G), up(dst.b(), C::MAX_B))
     }
@@ -295,6 +311,8 @@ const TEXEL_RANGE: (f32, f32) = (-30_000.0, 30_000.0);
 const LIGHT_RANGE: (f32, f32) = (0.0, 255.996);
 
 impl<F: Filter, W: Wrap> Effect for Textured<'_, F, W> {
+    type Uniforms<S: Interp> = ();
+    fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 5;
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
@@ -334,7 +352,7 @@ impl<F: Filter, W: Wrap> Effect for Textured<'_, F, W> {
     }
 
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(&self, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         let (r, g, b) = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16());
         let light = |t: u32, l: S| (t * (l.channel() as u32 + 1)) >> 8;
         C::from_channels(
@@ -342,5 +360,162 @@ impl<F: Filter, W: Wrap> Effect for Textured<'_, F, W> {
             rescale(light(g, v[3]), 63, C::MAX_G),
             rescale(light(b, v[4]), 31, C::MAX_B),
         )
+    }
+}
+
+/// Per-pixel (Phong) lighting: the normal and the position are
+/// interpolated and every pixel is lit, so highlights and the edge of the
+/// lit side stay sharp on coarse meshes. With `SPECULAR`
+/// ([`BlinnPhong`]) it adds Blinn-Phong highlights of the given color and
+/// power. The material color is lit; vertex colors are not used.
+///
+/// Varyings: normal and position in the lighting space (6). In fixed point
+/// the position must stay within about ±180 units of the lights and the
+/// eye (squared distances must fit 16.16).
+#[derive(Clone, Copy, Debug)]
+pub struct Phong<const SPECULAR: bool = false> {
+    /// Specular color (with `SPECULAR`).
+    pub specular: Rgb888,
+    /// Specular power, rounded to an integer from 1 to 256.
+    pub power: f32,
+}
+
+/// [`Phong`] with Blinn-Phong specular highlights.
+pub type BlinnPhong = Phong<true>;
+
+impl Phong<false> {
+    /// Diffuse per-pixel lighting.
+    pub const fn new() -> Self {
+        Self { specular: Rgb888::new(0, 0, 0), power: 1.0 }
+    }
+}
+
+impl Default for Phong<false> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Phong<true> {
+    /// Diffuse per-pixel lighting plus highlights of `specular` color and
+    /// `power` (Babylon's `specularColor` and `specularPower`).
+    pub const fn with_specular(specular: Rgb888, power: f32) -> Self {
+        Self { specular, power }
+    }
+}
+
+/// The lights of a draw call in the span loop's scalar.
+#[derive(Clone, Copy, Debug)]
+pub struct PhongUniforms<S> {
+    color: [S; 3],
+    ambient: [S; 3],
+    sun: Option<([S; 3], [S; 3])>,
+    point: Option<([S; 3], [S; 3])>,
+    eye: [S; 3],
+    specular: [S; 3],
+    power: u32,
+}
+
+fn vec_s<S: Interp>(v: Vec3) -> [S; 3] {
+    [S::from_f32(v.x), S::from_f32(v.y), S::from_f32(v.z)]
+}
+
+#[inline(always)]
+fn dot_s<S: Interp>(a: &[S; 3], b: &[S; 3]) -> S {
+    a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
+}
+
+#[inline(always)]
+fn normalize_s<S: Interp>(v: [S; 3]) -> [S; 3] {
+    let k = dot_s(&v, &v).rsqrt();
+    [v[0].mul(k), v[1].mul(k), v[2].mul(k)]
+}
+
+/// `x^n` by squaring.
+#[inline(always)]
+fn powi_s<S: Interp>(mut x: S, mut n: u32) -> S {
+    let mut r = S::from_f32(1.0);
+    while n > 0 {
+        if n & 1 == 1 {
+            r = r.mul(x);
+        }
+        x = x.mul(x);
+        n >>= 1;
+    }
+    r
+}
+
+impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
+    const VARYINGS: usize = 6;
+    const LIT_VERTICES: bool = true;
+    const USES_FACE: bool = false;
+    const NAME: &'static str = if SPECULAR { "blinn-phong" } else { "phong" };
+    type Uniforms<S: Interp> = PhongUniforms<S>;
+
+    fn uniforms<S: Interp>(&self, lights: &Lighting, color: Rgb888) -> PhongUniforms<S> {
+        let unit = |c: Rgb888| Vec3::new(c.r() as f32, c.g() as f32, c.b() as f32) * (1.0 / 255.0);
+        PhongUniforms {
+            color: vec_s(unit(color)),
+            ambient: vec_s(lights.ambient),
+            sun: lights.sun.map(|(l, c)| (vec_s(l), vec_s(c))),
+            point: lights.point.map(|p| (vec_s(p.position), vec_s(p.color))),
+            eye: vec_s(lights.eye),
+            specular: vec_s(unit(self.specular)),
+            power: if self.power >= 1.0 { (self.power + 0.5).min(256.0) as u32 } else { 1 },
+        }
+    }
+
+    fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
+        let mut r = [(0.0, 0.0); MAX_VARYINGS];
+        r[..6].copy_from_slice(&[(-1.01, 1.01), (-1.01, 1.01), (-1.01, 1.01), TEXEL_RANGE, TEXEL_RANGE, TEXEL_RANGE]);
+        r
+    }
+
+    fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+        let n = v.normal.normalize_or_zero();
+        let mut out = [0.0; MAX_VARYINGS];
+        out[..6].copy_from_slice(&[n.x, n.y, n.z, v.position.x, v.position.y, v.position.z]);
+        out
+    }
+
+    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
+        Rgb888::BLACK
+    }
+
+    #[inline(always)]
+    fn shade<C: Color, S: Interp>(&self, u: &PhongUniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+        let zero = S::default();
+        let n = normalize_s([v[0], v[1], v[2]]);
+        let p = [v[3], v[4], v[5]];
+        let mut light = u.ambient;
+        let mut shine = [zero; 3];
+        let view = if SPECULAR { normalize_s([u.eye[0].sub(p[0]), u.eye[1].sub(p[1]), u.eye[2].sub(p[2])]) } else { [zero; 3] };
+        let mut add = |l: [S; 3], c: &[S; 3]| {
+            let d = dot_s(&n, &l);
+            if d > zero {
+                for k in 0..3 {
+                    light[k] = light[k].add(c[k].mul(d));
+                }
+                if SPECULAR {
+                    let h = normalize_s([l[0].add(view[0]), l[1].add(view[1]), l[2].add(view[2])]);
+                    let s = powi_s(dot_s(&n, &h).clamp_to(zero, S::from_f32(1.0)), u.power);
+                    for k in 0..3 {
+                        shine[k] = shine[k].add(c[k].mul(s));
+                    }
+                }
+            }
+        };
+        if let Some((l, c)) = &u.sun {
+            add(*l, c);
+        }
+        if let Some((lp, c)) = &u.point {
+            add(normalize_s([lp[0].sub(p[0]), lp[1].sub(p[1]), lp[2].sub(p[2])]), c);
+        }
+        let one = S::from_f32(1.0);
+        let channel = |k: usize, max: u8| {
+            let lit = u.color[k].mul(light[k].clamp_to(zero, one)).add(u.specular[k].mul(shine[k]));
+            lit.clamp_to(zero, one).mul(S::from_f32(max as f32)).add(S::from_f32(0.5)).channel()
+        };
+        C::from_channels(channel(0, C::MAX_R), channel(1, C::MAX_G), channel(2, C::MAX_B))
     }
 }

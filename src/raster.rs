@@ -281,6 +281,7 @@ struct Shape {
 pub fn rasterize<C, S, E, P, D, const V: usize>(
     target: &mut StripTarget<'_, C>,
     effect: &E,
+    uniforms: &E::Uniforms<S>,
     tri: [&ScreenVertex<V>; 3],
     face: C,
     subpixel_bits: u32,
@@ -414,7 +415,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
                 for i in 0..n {
                     (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
                 }
-                span::<C, S, E, P, D>(color, depths, effect, zs, zd, vals, &steps, qs, qd, face, &bounds);
+                span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
             } else {
                 let (k, j) = (x0 - x_base, y - y_start);
                 for i in 0..n {
@@ -422,7 +423,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
                 }
                 let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
                 let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
-                span::<C, S, E, P, D>(color, depths, effect, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
+                span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
             }
         }
         long.step();
@@ -450,6 +451,7 @@ fn span<C, S, E, P, D>(
     color: &mut [C],
     depth: &mut [u16],
     effect: &E,
+    uniforms: &E::Uniforms<S>,
     mut z: S,
     z_dx: S,
     mut vals: [S; MAX_VARYINGS],
@@ -499,7 +501,7 @@ fn span<C, S, E, P, D>(
                     if D::WRITE {
                         *zb = zq;
                     }
-                    *px = effect.shade(face, &cur, *px);
+                    *px = effect.shade(uniforms, face, &cur, *px);
                 }
                 z = z.add(z_dx);
                 for i in 0..E::VARYINGS {
@@ -517,7 +519,7 @@ fn span<C, S, E, P, D>(
             if D::WRITE {
                 *zb = zq;
             }
-            *px = if P::CORRECT { effect.shade(face, &divide(&vals, q), *px) } else { effect.shade(face, &vals, *px) };
+            *px = if P::CORRECT { effect.shade(uniforms, face, &divide(&vals, q), *px) } else { effect.shade(uniforms, face, &vals, *px) };
         }
         if D::TEST || D::WRITE {
             z = z.add(z_dx);

@@ -17,8 +17,9 @@
 //! + 2·H                            per-strip list heads
 //! + size_of::<C>()                 the background the strips hold
 //! ```
-//! rounded up to a multiple of 4. A [`Frame`] adds about 12 bytes per
-//! draw-call slot ([`MAX_DRAW_CALLS`]) on the stack while it is recorded.
+//! rounded up to a multiple of 4. A [`Frame`] adds about 80 bytes per
+//! draw-call slot ([`MAX_DRAW_CALLS`]: the material and the draw call's
+//! lights) on the stack while it is recorded.
 
 use crate::clip::{self, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
 use crate::effect::{vertex_varyings, Color, Effect, FaceInput, VertexInput};
@@ -126,8 +127,9 @@ pub struct FrameStats {
 /// materials. Implemented for every [`Material`]; each implementation is a
 /// separate monomorphized span loop.
 pub trait MaterialProgram<C, S: Settings, const V: usize> {
-    /// Rasterizes one triangle into a strip.
-    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C);
+    /// Rasterizes one triangle into a strip, lit by `lights` (the draw
+    /// call's, for effects that light pixels).
+    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, lights: &Lighting);
 }
 
 impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
@@ -138,8 +140,9 @@ where
     P: Perspective,
     D: DepthMode,
 {
-    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C) {
-        raster::rasterize::<C, S::Interp, E, P, D, V>(target, &self.effect, tri, face, S::SUBPIXEL_BITS)
+    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, lights: &Lighting) {
+        let uniforms = self.effect.uniforms::<S::Interp>(lights, self.color);
+        raster::rasterize::<C, S::Interp, E, P, D, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS)
     }
 }
 
@@ -337,7 +340,7 @@ pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
     b: Buffers<'r, C, V>,
     n_vertices: usize,
     n_triangles: usize,
-    draws: Vec<(&'m dyn MaterialProgram<C, S, V>, u16), MAX_DRAW_CALLS>,
+    draws: Vec<(&'m dyn MaterialProgram<C, S, V>, u16, Lighting), MAX_DRAW_CALLS>,
     view_proj: Mat4,
     lights: Lighting,
     background: C,
@@ -359,7 +362,7 @@ where
             n_triangles: 0,
             draws: Vec::new(),
             view_proj,
-            lights: Lighting::new(lights),
+            lights: Lighting::new(lights, view_proj.eye().unwrap_or(Vec3::ZERO)),
             background,
             stats: FrameStats::default(),
         }
@@ -407,10 +410,10 @@ where
         if mesh.vertex_count() > capacity - base {
             return Err(DrawError::VertexCapacity { needed: base + mesh.vertex_count(), capacity });
         }
-        self.begin_draw(material)?;
         let lights = self.lights;
         let scale = if E::LIT_VERTICES { model.similarity_scale() } else { None };
         let vertex_lights = scale.map_or(lights, |s| lights.in_model_space(model, s));
+        self.begin_draw(material, vertex_lights)?;
         let stage = VertexStage {
             model: *model,
             mvp: self.view_proj * *model,
@@ -470,7 +473,7 @@ where
         const { assert!(E::VARYINGS <= V, "the renderer stores fewer varyings (V) than this effect needs") };
         let base = self.n_vertices;
         let snapshot = self.stats;
-        self.begin_draw(material)?;
+        self.begin_draw(material, Lighting::UNLIT)?;
         let lights = Lighting::UNLIT;
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {
@@ -501,16 +504,16 @@ where
         Ok(())
     }
 
-    fn begin_draw(&mut self, program: &'m dyn MaterialProgram<C, S, V>) -> Result<(), DrawError> {
+    fn begin_draw(&mut self, program: &'m dyn MaterialProgram<C, S, V>, lights: Lighting) -> Result<(), DrawError> {
         let first = self.n_triangles as u16;
-        self.draws.push((program, first)).map_err(|_| DrawError::DrawCallCapacity)?;
+        self.draws.push((program, first, lights)).map_err(|_| DrawError::DrawCallCapacity)?;
         self.stats.draw_calls += 1;
         Ok(())
     }
 
     fn rollback(&mut self, vertices: usize, stats: FrameStats) {
         self.n_vertices = vertices;
-        if let Some((_, first)) = self.draws.pop() {
+        if let Some((_, first, _)) = self.draws.pop() {
             self.n_triangles = first as usize;
         }
         self.stats = stats;
@@ -671,7 +674,8 @@ where
                 }
                 let vs = &b.vertices;
                 let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
-                draws[draw].0.rasterize(&mut strip, tri, C::from(Rgb888::new(rec.face[0], rec.face[1], rec.face[2])));
+                let (program, _, lights) = &draws[draw];
+                program.rasterize(&mut strip, tri, C::from(Rgb888::new(rec.face[0], rec.face[1], rec.face[2])), lights);
                 let bottom = tri[0].y.max(tri[1].y).max(tri[2].y);
                 if first_row_at_or_below(bottom, bits) > (y0 + rows) as i32 {
                     tris[i as usize].next = NONE;

@@ -84,7 +84,7 @@ impl Lights {
     /// Diffuse light reaching a point with the given (unit) normal.
     /// Every term is finite for finite inputs; a zero normal gets ambient only.
     pub fn diffuse(&self, position: Vec3, normal: Vec3) -> Vec3 {
-        Lighting::new(self).diffuse(position, normal)
+        Lighting::new(self, Vec3::ZERO).diffuse(position, normal)
     }
 }
 
@@ -92,22 +92,27 @@ impl Lights {
 /// directional light's direction is normalized here, not per vertex.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lighting {
-    ambient: Vec3,
-    point: Option<PointLight>,
+    /// Ambient term.
+    pub ambient: Vec3,
+    /// The point light.
+    pub point: Option<PointLight>,
     /// Unit direction toward the directional light, and its color.
-    sun: Option<(Vec3, Vec3)>,
+    pub sun: Option<(Vec3, Vec3)>,
+    /// The eye (camera position), for specular highlights.
+    pub eye: Vec3,
 }
 
 impl Lighting {
     /// Full ambient and no light sources.
-    pub const UNLIT: Self = Self { ambient: Vec3::ONE, point: None, sun: None };
+    pub const UNLIT: Self = Self { ambient: Vec3::ONE, point: None, sun: None, eye: Vec3::ZERO };
 
-    /// Prepares `lights`.
-    pub fn new(lights: &Lights) -> Self {
+    /// Prepares `lights` seen from `eye`.
+    pub fn new(lights: &Lights, eye: Vec3) -> Self {
         Self {
             ambient: lights.ambient,
             point: lights.point,
             sun: lights.directional.map(|d| ((-d.direction).normalize_or_zero(), d.color)),
+            eye,
         }
     }
 
@@ -120,6 +125,7 @@ impl Lighting {
             ambient: self.ambient,
             point: self.point.map(|p| PointLight { position: inverse.transform_point3(p.position), color: p.color }),
             sun: self.sun.map(|(l, color)| (inverse.upper3().transform(l).normalize_or_zero(), color)),
+            eye: inverse.transform_point3(self.eye),
         }
     }
 

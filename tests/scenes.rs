@@ -30,7 +30,7 @@ fn load(name: &str) -> Option<HostScene> {
 
 fn render<S: Settings>(scene: &HostScene, w: usize, h: usize) -> Image<Rgb565> {
     let materials = scene.materials::<Nearest, Repeat, PerPixel>(EffectChoice::Auto);
-    let mut r: HostRenderer<Rgb565, 5, S> = HostRenderer::new(w, h, 16, 4096, 4096, Rgb565::BLACK).unwrap();
+    let mut r: HostRenderer<Rgb565, 6, S> = HostRenderer::new(w, h, 16, 4096, 4096, Rgb565::BLACK).unwrap();
     let mut frame = r.begin_frame(&scene.camera_or_default(), &scene.lights, Rgb565::new(2, 4, 6));
     scene.draw(&mut frame, &materials, &Mat4::IDENTITY).unwrap();
     let mut img = Image::new(w as u32, h as u32, Rgb565::BLACK);

@@ -15,8 +15,9 @@
 //! headlight (ambient 0.15, diffuse 0.85 along the view). Textures named
 //! by the materials are read from beside the scene file (PNG or JPEG).
 //! `--effect auto` (default) textures the meshes that have a texture and
-//! texture coordinates and Gouraud-shades the rest; `gouraud` and `flat`
-//! force one effect. `--frames N --spin` renders a turntable of N frames
+//! texture coordinates and Gouraud-shades the rest; `gouraud`, `flat` and
+//! `phong` (per-pixel Blinn-Phong with the materials' specular color and
+//! power) force one effect. `--frames N --spin` renders a turntable of N frames
 //! around the vertical axis: into an animated GIF if OUT ends in `.gif`,
 //! else into OUT-000.png, OUT-001.png, …
 //!
@@ -58,7 +59,7 @@ struct Options {
 
 fn main() {
     let opts = parse_args().unwrap_or_else(|e| {
-        eprintln!("render: {e}\nusage: render INPUT -o OUT.png [--size WxH] [--strip N] [--subpixel-bits 0..8] [--interp fixed|f32] [--effect unlit|flat|gouraud|auto] [--cull none|back] [--coverage COV.png] [--yaw DEG] [--pitch DEG] [--distance D] [--fov DEG] [--persp exact|span16|affine] [--filter nearest|bilinear] [--light file|head] [--frames N] [--spin]");
+        eprintln!("render: {e}\nusage: render INPUT -o OUT.png [--size WxH] [--strip N] [--subpixel-bits 0..8] [--interp fixed|f32] [--effect unlit|flat|gouraud|auto|phong] [--cull none|back] [--coverage COV.png] [--yaw DEG] [--pitch DEG] [--distance D] [--fov DEG] [--persp exact|span16|affine] [--filter nearest|bilinear] [--light file|head] [--frames N] [--spin]");
         std::process::exit(2)
     });
     if let Err(e) = run(&opts) {
@@ -134,8 +135,8 @@ fn parse_args() -> Result<Options, String> {
         if !effect_given {
             o.effect = "auto".into();
         }
-        if !["auto", "flat", "gouraud"].contains(&o.effect.as_str()) {
-            return Err(format!("--effect {}: expected auto, flat or gouraud for a scene", o.effect));
+        if !["auto", "flat", "gouraud", "phong"].contains(&o.effect.as_str()) {
+            return Err(format!("--effect {}: expected auto, flat, gouraud or phong for a scene", o.effect));
         }
         if o.coverage.is_some() {
             return Err("--coverage is only for .tri input".into());

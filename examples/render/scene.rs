@@ -136,6 +136,7 @@ fn frames<S: Settings, P: Perspective, F: Filter>(o: &Options, scene: &HostScene
     let choice = match o.effect.as_str() {
         "flat" => EffectChoice::Flat,
         "gouraud" => EffectChoice::Gouraud,
+        "phong" => EffectChoice::Phong,
         _ => EffectChoice::Auto,
     };
     let materials = scene.materials::<F, Repeat, P>(choice);
@@ -144,7 +145,7 @@ fn frames<S: Settings, P: Perspective, F: Filter>(o: &Options, scene: &HostScene
     let vertices: usize = scene.meshes.iter().map(|m| m.positions.len()).sum();
     let triangles: usize = scene.meshes.iter().map(|m| m.indices.len() / 3).sum();
     let strip = o.strip.unwrap_or(16).min(o.height);
-    let mut renderer: HostRenderer<Rgb888, 5, S> =
+    let mut renderer: HostRenderer<Rgb888, 6, S> =
         HostRenderer::new(o.width, o.height, strip, (vertices + 4096).min(65534), (2 * triangles + 1024).min(65534), Rgb888::BLACK)
             .map_err(|e| e.to_string())?;
     let n = o.scene.frames.unwrap_or(1);

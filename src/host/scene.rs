@@ -5,7 +5,7 @@
 
 use super::load_texture;
 use crate::babylon::{BabylonScene, Error as BabylonError};
-use crate::effect::{Color, Gouraud, Textured};
+use crate::effect::{BlinnPhong, Color, Gouraud, Textured};
 use crate::material::{Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::{Mesh, Sphere};
@@ -147,6 +147,9 @@ pub enum EffectChoice {
     Gouraud,
     /// Flat everywhere.
     Flat,
+    /// Per-pixel lighting with the material's specular highlights
+    /// ([`BlinnPhong`](crate::effect::BlinnPhong)) everywhere (needs `V >= 6`).
+    Phong,
 }
 
 impl HostScene {
@@ -231,6 +234,16 @@ impl HostScene {
     pub fn materials<'s, F: Filter, W: Wrap, P: Perspective>(&'s self, choice: EffectChoice) -> SceneMaterials<'s, F, W, P> {
         let lit = self.materials.iter().map(|m| m.base.configure(Material::new(Gouraud))).collect();
         let flat = self.materials.iter().map(|m| m.base.configure(Material::new(crate::effect::Flat))).collect();
+        let phong = self
+            .materials
+            .iter()
+            .map(|m| {
+                let s = m.base.specular;
+                let c = |v: f32| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
+                let specular = embedded_graphics::pixelcolor::Rgb888::new(c(s.x), c(s.y), c(s.z));
+                m.base.configure(Material::new(BlinnPhong::with_specular(specular, m.base.specular_power)))
+            })
+            .collect();
         let textured = self
             .materials
             .iter()
@@ -243,12 +256,14 @@ impl HostScene {
             choice,
             lit,
             flat,
+            phong,
             textured,
             default: Material::new(Gouraud).with_color(embedded_graphics::pixelcolor::Rgb888::new(200, 200, 200)),
         }
     }
 
-    /// Draws every mesh, each placed by `spin * model`.
+    /// Draws every mesh, each placed by `spin * model`. The renderer must
+    /// store 6 varyings per vertex (`V >= 6`).
     pub fn draw<'m, C: Color, const V: usize, S: Settings, F: Filter, W: Wrap, P: Perspective>(
         &self,
         frame: &mut Frame<'_, 'm, C, V, S>,
@@ -260,6 +275,7 @@ impl HostScene {
             let mesh = m.mesh();
             match (materials.choice, m.material) {
                 (EffectChoice::Flat, Some(i)) => frame.draw(&mesh, &model, &materials.flat[i])?,
+                (EffectChoice::Phong, Some(i)) => frame.draw(&mesh, &model, &materials.phong[i])?,
                 (EffectChoice::Auto, Some(i)) if m.uvs.is_some() && materials.textured[i].is_some() => {
                     if let Some(t) = &materials.textured[i] {
                         frame.draw(&mesh, &model, t)?
@@ -288,6 +304,7 @@ pub struct SceneMaterials<'s, F, W, P> {
     choice: EffectChoice,
     lit: Vec<Material<Gouraud>>,
     flat: Vec<Material<crate::effect::Flat>>,
+    phong: Vec<Material<BlinnPhong>>,
     textured: Vec<Option<Material<Textured<'s, F, W>, P>>>,
     default: Material<Gouraud>,
 }

@@ -42,6 +42,8 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     fn recip(self) -> Self;
     /// `min(max(self, lo), hi)`.
     fn clamp_to(self, lo: Self, hi: Self) -> Self;
+    /// `1 / sqrt(self)` for a positive value; zero or less gives zero.
+    fn rsqrt(self) -> Self;
     /// The integer part as a color channel. The caller keeps the value in
     /// `[0, 256)`; outside it the result wraps (fixed) or saturates (`f32`).
     fn channel(self) -> u8;
@@ -105,6 +107,14 @@ impl Interp for f32 {
             1.0 / self
         } else {
             1e30
+        }
+    }
+    #[inline]
+    fn rsqrt(self) -> Self {
+        if self > 1e-30 {
+            1.0 / super::sqrt(self)
+        } else {
+            0.0
         }
     }
     #[inline]
@@ -202,6 +212,16 @@ impl Interp for Fixed {
         }
     }
     #[inline]
+    fn rsqrt(self) -> Self {
+        let r = self.to_bits();
+        if r <= 0 {
+            return Fixed::ZERO;
+        }
+        // sqrt(x) in 16.16 is isqrt(raw * 2^16); its reciprocal saturates.
+        let root = ((r as u64) << 16).isqrt() as i64;
+        Fixed::from_bits(((1i64 << 32) / root).min(i32::MAX as i64) as i32)
+    }
+    #[inline]
     fn clamp_to(self, lo: Self, hi: Self) -> Self {
         self.clamp(lo, hi)
     }
@@ -250,6 +270,9 @@ mod tests {
         assert_eq!(S::from_f32(300.0).clamp_to(S::from_f32(0.0), S::from_f32(255.0)), S::from_f32(255.0));
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth16(), 40000);
         assert_eq!(S::from_f32(0.5).recip().to_f32(), 2.0);
+        assert_eq!(S::from_f32(4.0).rsqrt().to_f32(), 0.5);
+        assert!((S::from_f32(2.0).rsqrt().to_f32() - core::f32::consts::FRAC_1_SQRT_2).abs() < 1e-4);
+        assert_eq!(S::from_f32(-1.0).rsqrt().to_f32(), 0.0);
         // Plane 10 + 2x - y at (3.5, 1.25) pixels with 4 sub-pixel bits (f = 5).
         let (v0, dx, dy) = (S::from_f32(10.0), S::from_f32(2.0), S::from_f32(-1.0));
         assert_eq!(S::plane_at(v0, dx, dy, 112, 40, 5), S::from_f32(15.75));

@@ -211,6 +211,30 @@ impl Mat4 {
         Mat4 { m: r }
     }
 
+    /// The eye of a perspective view-projection matrix: the point that
+    /// projects to `x = y = w = 0`. `None` for an orthographic or singular
+    /// matrix.
+    pub fn eye(&self) -> Option<Vec3> {
+        // Rows 0, 1 and 3 of M · (e, 1) = 0: a 3×3 system, by Cramer's rule.
+        let m = &self.m;
+        let r = [m[0], m[1], m[3]];
+        let a = Mat3 { m: [[r[0][0], r[0][1], r[0][2]], [r[1][0], r[1][1], r[1][2]], [r[2][0], r[2][1], r[2][2]]] };
+        let b = [-r[0][3], -r[1][3], -r[2][3]];
+        let det = a.determinant();
+        if det.is_nan() || det.abs() <= 1e-20 {
+            return None;
+        }
+        let solve = |col: usize| {
+            let mut c = a;
+            for (row, v) in c.m.iter_mut().zip(b) {
+                row[col] = v;
+            }
+            c.determinant() / det
+        };
+        let e = Vec3::new(solve(0), solve(1), solve(2));
+        e.is_finite().then_some(e)
+    }
+
     /// True if every entry is finite.
     pub fn is_finite(&self) -> bool {
         self.m.iter().flatten().all(|v| v.is_finite())
@@ -269,6 +293,14 @@ mod tests {
     fn singular_normal_matrix_is_zero_not_nan() {
         let m = Mat4::scaling(Vec3::new(1.0, 0.0, 1.0));
         assert_eq!(m.normal_matrix(), Mat3::ZERO);
+    }
+
+    #[test]
+    fn the_eye_is_recovered_from_a_view_projection() {
+        let eye = Vec3::new(1.5, -2.0, -7.0);
+        let vp = Mat4::perspective_fov_lh(0.8, 1.3, 0.1, 50.0) * Mat4::look_at_lh(eye, Vec3::new(0.2, 0.1, 3.0), Vec3::new(0.0, 1.0, 0.0));
+        assert!((vp.eye().unwrap() - eye).length() < 1e-3);
+        assert_eq!(Mat4::IDENTITY.eye(), None);
     }
 
     #[test]
