@@ -53,8 +53,7 @@ fn reference(px: usize, py: usize) -> Option<(f64, [f64; 3])> {
     let n = [p[0] / RADIUS, p[1] / RADIUS, p[2] / RADIUS];
     let l = {
         let v = [-1.0, 0.6, -1.2];
-        let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) as f64;
-        let len = len.sqrt();
+        let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
         [v[0] / len, v[1] / len, v[2] / len]
     };
     let ndl = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]).max(0.0);
