@@ -52,7 +52,7 @@ fn reference(px: usize, py: usize) -> Option<(f64, [f64; 3])> {
     let p = [o[0] + k * d[0], o[1] + k * d[1], o[2] + k * d[2]];
     let n = [p[0] / RADIUS, p[1] / RADIUS, p[2] / RADIUS];
     let l = {
-        let v = [-1.0, 0.6, -1.2];
+        let v: [f64; 3] = [-1.0, 0.6, -1.2];
         let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
         [v[0] / len, v[1] / len, v[2] / len]
     };
