@@ -3,45 +3,77 @@
 # prints instructions per frame and checks that every frame is bit-identical.
 #
 #   scripts/target-bench.sh            # table
-#   scripts/target-bench.sh --csv      # scene,mode,target,instr_per_frame,geometry_instr,sink_instr,queued,crc,host_crc
+#   scripts/target-bench.sh --csv      # scene,mode,target,instr_per_frame,instr_per_pixel,crc,host_crc,static_ram,stack,flash
 #   scripts/target-bench.sh --readme   # rewrites the table in README.md
 #
 # Targets: thumbv7em-none-eabihf on QEMU mps2-an386 (Cortex-M4F) and
 # thumbv6m-none-eabi on mps2-an385 (a Cortex-M3 running M0+ code: the
 # stand-in for an RP2040). With -icount shift=0 each instruction is 1 ns of
-# virtual time and SysTick (25 MHz) ticks every 40 instructions.
-# instr_per_frame excludes the checksum sink (measured separately);
-# geometry_instr is the part spent in draw calls (vertex stage, clipping,
-# culling, queuing) before rasterization;
-# "fps@150MHz" assumes one instruction per cycle and is only an estimate.
+# virtual time and SysTick (25 MHz) ticks every 40 instructions (the
+# firmware measures this factor on a loop of known length and the script
+# fails if it is not 40).
+#
+# Columns: instr_per_frame is everything the renderer does for a frame
+# (strip clears and handing strips to the DrawTarget included) minus the
+# benchmark's checksum sink, which is timed separately; instr_per_pixel
+# divides it by the pixels drawn (pixels of the final frame that are not
+# background, counted on the host); static_ram is size_of the renderer
+# (on a board it is a static); stack is the peak stack of the frame, by
+# stack painting; flash is the whole benchmark firmware (text + data).
+# "fps@150MHz" assumes one instruction per cycle: an estimate, no more.
 # Needs qemu-system-arm and the two rustup targets (.ci/run installs them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-csv=${1:-}
+mode_arg=${1:-}
+
+size_tool=""
+for c in "$(rustc --print sysroot)/lib/rustlib/x86_64-unknown-linux-gnu/bin/llvm-size" "$(command -v llvm-size || true)"; do
+  if [ -n "$c" ] && [ -x "$c" ]; then size_tool=$c; break; fi
+done
 
 host=$(cargo run -q --release --example bench_host --no-default-features --features libm,std)
 rows=""
+declare -A flash
 for t in thumbv7em-none-eabihf thumbv6m-none-eabi; do
+  (cd firmware/qemu-bench && cargo build -q --release --target "$t")
   out=$(cd firmware/qemu-bench && timeout 600 cargo run -q --release --target "$t")
-  rows+=$(tail -n +2 <<<"$out")$'\n'
+  cal=$(grep '^calibration,' <<<"$out")
+  if [ "$(cut -d, -f3 <<<"$cal")" != 40 ]; then
+    echo "instructions per tick calibration is not 40: $cal" >&2
+    exit 1
+  fi
+  core=$([ "$t" = thumbv6m-none-eabi ] && echo m0 || echo m4f)
+  elf=firmware/qemu-bench/target/$t/release/soft3d-qemu-bench
+  if [ -n "$size_tool" ]; then
+    flash[$core]=$("$size_tool" "$elf" | awk 'NR == 2 { print $1 + $2 }')
+  else
+    flash[$core]=n/a
+  fi
+  rows+=$(grep -v '^calibration,\|^scene,' <<<"$out")$'\n'
 done
 
 fail=0
 md=""
 # 1234567 -> 1,234,567
 commas() { sed ':a;s/\B[0-9]\{3\}\>/,&/;ta' <<<"$1"; }
-[ "$csv" = "--csv" ] && echo "scene,mode,target,instr_per_frame,geometry_instr,sink_instr,queued,crc,host_crc"
-[ "$csv" = "--csv" ] || printf '%-10s %-6s %-4s %12s %12s %11s %7s %9s  %s\n' scene mode core instr/frame of.geometry fps@150MHz queued crc host
-while IFS=, read -r scene mode core instr sink queued crc geometry; do
+if [ "$mode_arg" = "--csv" ]; then
+  echo "scene,mode,target,instr_per_frame,instr_per_pixel,crc,host_crc,static_ram,stack,flash"
+else
+  printf '%-10s %-6s %-4s %12s %9s %11s %7s %9s %9s %7s %7s  %s\n' scene mode core instr/frame instr/px fps@150MHz queued crc ram stack flash host
+fi
+while IFS=, read -r scene mode core instr sink queued crc geometry stack ram; do
   [ -n "$scene" ] || continue
   want=$(grep "^$scene,$mode," <<<"$host" | cut -d, -f3)
+  drawn=$(grep "^$scene,$mode," <<<"$host" | cut -d, -f4)
   [ "$crc" = "$want" ] || fail=1
   render=$((instr - sink))
-  md+="| $scene | $mode | $core | $(commas "$render") | $(commas "$geometry") | $(commas "$sink") | $queued |"$'\n'
-  if [ "$csv" = "--csv" ]; then
-    echo "$scene,$mode,$core,$render,$geometry,$sink,$queued,$crc,$want"
+  per_px=$([ "$drawn" -gt 0 ] && awk -v n="$render" -v p="$drawn" 'BEGIN { printf "%.1f", n / p }' || echo "n/a")
+  fps=$(awk -v n="$render" 'BEGIN { printf "%.1f", 150000000 / n }')
+  md+="| $scene | $mode | $core | $(commas "$render") | $per_px | $(commas "$geometry") | $(commas "$drawn") | $queued | $fps | $(commas "$ram") | $(commas "$stack") |"$'\n'
+  if [ "$mode_arg" = "--csv" ]; then
+    echo "$scene,$mode,$core,$render,$per_px,$crc,$want,$ram,$stack,${flash[$core]}"
   else
-    printf '%-10s %-6s %-4s %12d %12d %11.1f %7d %9s  %s\n' "$scene" "$mode" "$core" "$render" "$geometry" "$(awk -v n="$render" "BEGIN { print 150000000 / n }")" "$queued" "$crc" \
+    printf '%-10s %-6s %-4s %12d %9s %11s %7d %9s %9d %7d %7s  %s\n' "$scene" "$mode" "$core" "$render" "$per_px" "$fps" "$queued" "$crc" "$ram" "$stack" "${flash[$core]}" \
       "$([ "$crc" = "$want" ] && echo same || echo "DIFFERS ($want)")"
   fi
 done <<<"$rows"
@@ -49,10 +81,11 @@ if [ "$fail" != 0 ]; then
   echo "target and host frames differ" >&2
   exit 1
 fi
-if [ "$csv" = "--readme" ]; then
+if [ "$mode_arg" = "--readme" ]; then
   # Replace the lines between the two markers with the new table.
-  table="| scene | mode | core | instructions / frame | of which geometry | sink (excluded) | triangles drawn |"$'\n'
-  table+="| --- | --- | --- | ---: | ---: | ---: | ---: |"$'\n'"$md"
+  table="| scene | mode | core | instructions / frame | per pixel drawn | of which geometry | pixels drawn | triangles drawn | fps at 150 MHz (estimate) | renderer RAM | peak stack |"$'\n'
+  table+="| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"$'\n'"$md"
+  table+=$'\n'"Benchmark firmware flash: $(commas "${flash[m4f]}") bytes (M4F), $(commas "${flash[m0]}") bytes (M0+ code)."$'\n'
   awk -v table="$table" '
     /<!-- target-bench:begin -->/ { print; printf "%s", table; skip = 1; next }
     /<!-- target-bench:end -->/ { skip = 0 }

@@ -4,7 +4,13 @@
 //! Under `qemu-system-arm -icount shift=0` every instruction advances the
 //! virtual clock by 1 ns; the board's SysTick runs at 25 MHz, so one tick is
 //! 40 instructions. Counts are deterministic: the same binary prints the
-//! same numbers.
+//! same numbers. The factor is calibrated at start-up on a loop of exactly
+//! known length and printed as a `calibration` line.
+//!
+//! Per scene and mode it prints instructions per frame (the checksum sink
+//! timed separately), the frame's checksum, the peak stack the frame used
+//! (stack painting) and the renderer's RAM (`size_of`, what a `static`
+//! renderer occupies on a board).
 #![no_std]
 #![no_main]
 
@@ -51,6 +57,54 @@ fn selected(scene: &str, mode: &str) -> bool {
 
 const TARGET: &str = if cfg!(target_abi = "eabihf") { "m4f" } else { "m0" };
 
+/// Stack painting: the pattern written below the stack pointer before a
+/// frame, and how far below it is checked.
+const PAINT: u32 = 0x5AFE_57AC;
+const PAINT_BYTES: usize = 64 * 1024;
+/// Room left for `paint`'s and `stack_used`'s own frames.
+const PAINT_MARGIN: usize = 512;
+
+/// Fills `[top - PAINT_BYTES, top - PAINT_MARGIN)` with the pattern.
+#[inline(never)]
+fn paint(top: usize) {
+    let mut a = top - PAINT_BYTES;
+    while a < top - PAINT_MARGIN {
+        // SAFETY: the region is RAM below the live stack frames (the
+        // emulated boards have 4 MB of RAM and the stack starts at its top),
+        // not used by anything else; written before the frame runs.
+        unsafe { (a as *mut u32).write_volatile(PAINT) };
+        a += 4;
+    }
+}
+
+/// Bytes below `top` that no longer hold the pattern: the deepest the
+/// stack went since `paint(top)`.
+#[inline(never)]
+fn stack_used(top: usize) -> usize {
+    let mut a = top - PAINT_BYTES;
+    while a < top - PAINT_MARGIN {
+        // SAFETY: the same region `paint` wrote; only read here.
+        if unsafe { (a as *const u32).read_volatile() } != PAINT {
+            return top - a;
+        }
+        a += 4;
+    }
+    PAINT_MARGIN
+}
+
+/// Instructions per tick, measured: a loop of `subs` and `bne` run
+/// `LOOPS` times is `2 * LOOPS` instructions (plus a handful around it).
+fn calibrate(timer: &mut Timer) -> Option<u32> {
+    const LOOPS: u32 = 2_000_000;
+    timer.start();
+    // SAFETY: a register-only countdown loop; touches no memory.
+    unsafe {
+        core::arch::asm!("2:", "subs {n}, #1", "bne 2b", n = inout(reg) LOOPS => _, options(nomem, nostack));
+    }
+    let ticks = timer.instructions()? / INSTRUCTIONS_PER_TICK;
+    Some(((2 * LOOPS as u64 + ticks as u64 / 2) / ticks.max(1) as u64) as u32)
+}
+
 /// Wraps the checksum sink and accumulates the instructions spent inside
 /// it, so that the frame's own cost can exclude them.
 struct TimedSink {
@@ -83,23 +137,31 @@ impl DrawTarget for TimedSink {
     }
 }
 
+type BenchRenderer<S> = Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, 3, S>;
+
 fn run<S: Settings>(timer: &mut Timer, mode: &str) {
-    let mut renderer: Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, 3, S> = Renderer::new(Rgb565::BLACK);
+    let mut renderer: BenchRenderer<S> = Renderer::new(Rgb565::BLACK);
+    let ram = core::mem::size_of::<BenchRenderer<S>>();
     let (camera, lights) = (demo_camera(), demo_lights());
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         if !selected(name, mode) {
             continue;
         }
         let mut out = TimedSink { inner: FrameChecksum::new(320, 240, Rgb565::BLACK), ticks: 0 };
+        let top = cortex_m::register::msp::read() as usize;
+        paint(top);
         timer.start();
         let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
         let _ = draw_bench(&mut frame, i);
         let geometry = timer.instructions();
         let Ok(stats) = frame.finish(&mut out);
+        let total = timer.instructions();
+        let stack = stack_used(top);
         let sink = out.ticks * INSTRUCTIONS_PER_TICK;
-        match (timer.instructions(), geometry) {
-            (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{}", name, mode, TARGET, n, sink, stats.queued, out.inner.sum, g),
-            _ => hprintln!("{},{},{},overflow,{},{},{:08x},0", name, mode, TARGET, sink, stats.queued, out.inner.sum),
+        let (sum, queued) = (out.inner.sum, stats.queued);
+        match (total, geometry) {
+            (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{},{},{}", name, mode, TARGET, n, sink, queued, sum, g, stack, ram),
+            _ => hprintln!("{},{},{},overflow,{},{},{:08x},0,{},{}", name, mode, TARGET, sink, queued, sum, stack, ram),
         }
     }
 }
@@ -112,7 +174,11 @@ fn main() -> ! {
     syst.set_reload(0x00FF_FFFF);
     syst.enable_counter();
     let mut timer = Timer(syst);
-    hprintln!("scene,mode,target,instructions,sink_instructions,queued,checksum,geometry_instructions");
+    match calibrate(&mut timer) {
+        Some(f) => hprintln!("calibration,instructions_per_tick,{},assumed,{}", f, INSTRUCTIONS_PER_TICK),
+        None => hprintln!("calibration,failed"),
+    }
+    hprintln!("scene,mode,target,instructions,sink_instructions,queued,checksum,geometry_instructions,stack,renderer_ram");
     run::<soft3d::FixedPoint>(&mut timer, "fixed");
     run::<soft3d::FloatingPoint>(&mut timer, "f32");
     debug::exit(debug::EXIT_SUCCESS);

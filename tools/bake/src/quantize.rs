@@ -1,0 +1,243 @@
+//! `i16` quantization of positions and normals.
+//!
+//! Positions: per mesh and per axis, `offset` is the middle of the bounding
+//! box and `scale` the model units per step, chosen so that the box fits in
+//! ±32767 steps. Normals: `scale` 1/32767, no offset. Both dequantize as
+//! `q as f32 * scale + offset` in `f32` ([`dequantize`]), the arithmetic the
+//! generated `const fn` repeats, so bake and target agree bit for bit.
+
+use crate::BakeError;
+use soft3d::math::Vec3;
+
+/// Largest quantized magnitude (symmetric range, -32768 unused).
+const Q_MAX: i32 = 32767;
+
+/// Model units per step of a quantized normal component.
+pub const NORMAL_SCALE: f32 = 1.0 / 32767.0;
+
+/// `q as f32 * scale + offset`, in `f32`: the dequantization the generated
+/// source performs at compile time.
+pub fn dequantize(q: i16, scale: f32, offset: f32) -> f32 {
+    q as f32 * scale + offset
+}
+
+/// The error quantization introduced into one mesh.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct QuantizationError {
+    /// Largest distance between a position and its dequantized value, in
+    /// model units.
+    pub max_position: f64,
+    /// Root mean square of that distance over the vertices.
+    pub rms_position: f64,
+    /// The mesh's bounding radius (as `soft3d::mesh::Mesh::bounds`).
+    pub radius: f64,
+    /// Largest error along one axis, in quantization steps of that axis
+    /// (at most 0.5 plus `f32` rounding).
+    pub max_axis_steps: f64,
+    /// Largest angle between a normal and its dequantized value, in
+    /// degrees (zero normals are left out).
+    pub max_normal_degrees: f64,
+}
+
+impl QuantizationError {
+    /// `max_position` relative to the bounding radius.
+    pub fn max_relative(&self) -> f64 {
+        relative(self.max_position, self.radius)
+    }
+    /// `rms_position` relative to the bounding radius.
+    pub fn rms_relative(&self) -> f64 {
+        relative(self.rms_position, self.radius)
+    }
+}
+
+fn relative(e: f64, r: f64) -> f64 {
+    if r > 0.0 {
+        e / r
+    } else {
+        0.0
+    }
+}
+
+/// A mesh's `i16` data.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuantizedMesh {
+    /// Positions in steps.
+    pub positions: Vec<[i16; 3]>,
+    /// Model units per step, per axis (0 for an axis of zero extent).
+    pub position_scale: [f32; 3],
+    /// The bounding box's middle, per axis.
+    pub position_offset: [f32; 3],
+    /// Normals in steps of [`NORMAL_SCALE`].
+    pub normals: Vec<[i16; 3]>,
+    /// The error introduced.
+    pub error: QuantizationError,
+}
+
+impl QuantizedMesh {
+    /// The dequantized positions.
+    pub fn dequantized_positions(&self) -> Vec<Vec3> {
+        let (s, o) = (self.position_scale, self.position_offset);
+        self.positions
+            .iter()
+            .map(|q| Vec3::new(dequantize(q[0], s[0], o[0]), dequantize(q[1], s[1], o[1]), dequantize(q[2], s[2], o[2])))
+            .collect()
+    }
+
+    /// The dequantized normals.
+    pub fn dequantized_normals(&self) -> Vec<Vec3> {
+        let d = |q: i16| dequantize(q, NORMAL_SCALE, 0.0);
+        self.normals.iter().map(|q| Vec3::new(d(q[0]), d(q[1]), d(q[2]))).collect()
+    }
+}
+
+/// Quantizes a mesh's positions and normals and measures the error.
+pub fn quantize(name: &str, positions: &[Vec3], normals: &[Vec3]) -> Result<QuantizedMesh, BakeError> {
+    let bad = |what: &str, i: usize| BakeError::Mesh {
+        name: name.to_string(),
+        problem: format!("{what} {i} is not finite and cannot be quantized to i16 (bake with f32)"),
+    };
+    if let Some(i) = positions.iter().position(|p| !p.is_finite()) {
+        return Err(bad("position", i));
+    }
+    if let Some(i) = normals.iter().position(|n| !n.is_finite()) {
+        return Err(bad("normal", i));
+    }
+
+    let mut lo = [f32::INFINITY; 3];
+    let mut hi = [f32::NEG_INFINITY; 3];
+    for p in positions {
+        for (k, v) in [p.x, p.y, p.z].into_iter().enumerate() {
+            lo[k] = lo[k].min(v);
+            hi[k] = hi[k].max(v);
+        }
+    }
+    // An empty mesh has no box: scale and offset 0.
+    let params = [0, 1, 2].map(|k| if lo[k] <= hi[k] { axis(lo[k], hi[k]) } else { (0.0, 0.0) });
+    let scale = params.map(|p| p.0);
+    let offset = params.map(|p| p.1);
+
+    let qp: Vec<[i16; 3]> = positions.iter().map(|p| [0, 1, 2].map(|k| quantize_axis(component(*p, k), scale[k], offset[k]))).collect();
+    let qn: Vec<[i16; 3]> = normals.iter().map(|n| [n.x, n.y, n.z].map(quantize_unit)).collect();
+    let mut q = QuantizedMesh { positions: qp, position_scale: scale, position_offset: offset, normals: qn, error: Default::default() };
+
+    let radius = soft3d::mesh::Mesh::new(positions, normals, &[]).map(|m| m.bounds().radius as f64).unwrap_or(0.0);
+    let mut e = QuantizationError { radius, ..Default::default() };
+    let mut sum2 = 0.0;
+    for (p, d) in positions.iter().zip(q.dequantized_positions()) {
+        let mut d2 = 0.0;
+        for (k, s) in scale.iter().enumerate() {
+            let diff = (component(d, k) as f64 - component(*p, k) as f64).abs();
+            d2 += diff * diff;
+            if *s > 0.0 {
+                e.max_axis_steps = e.max_axis_steps.max(diff / *s as f64);
+            }
+        }
+        sum2 += d2;
+        e.max_position = e.max_position.max(d2.sqrt());
+    }
+    if !positions.is_empty() {
+        e.rms_position = (sum2 / positions.len() as f64).sqrt();
+    }
+    for (n, d) in normals.iter().zip(q.dequantized_normals()) {
+        e.max_normal_degrees = e.max_normal_degrees.max(angle_degrees(*n, d));
+    }
+    q.error = e;
+    Ok(q)
+}
+
+fn component(v: Vec3, k: usize) -> f32 {
+    match k {
+        0 => v.x,
+        1 => v.y,
+        _ => v.z,
+    }
+}
+
+/// Scale and offset fitting `[lo, hi]` into ±32767 steps. The scale is
+/// rounded up to the next `f32` if needed, so the extremes stay in range.
+fn axis(lo: f32, hi: f32) -> (f32, f32) {
+    let offset = ((lo as f64 + hi as f64) * 0.5) as f32;
+    let half = (hi as f64 - offset as f64).max(offset as f64 - lo as f64);
+    if half <= 0.0 {
+        return (0.0, offset);
+    }
+    let mut scale = (half / Q_MAX as f64) as f32;
+    while (scale as f64) * (Q_MAX as f64) < half {
+        scale = f32::from_bits(scale.to_bits() + 1);
+    }
+    (scale, offset)
+}
+
+/// The step count whose `f32` dequantization lands nearest to `v`: the
+/// rounded quotient, or a neighbor when `f32` rounding favors it.
+fn quantize_axis(v: f32, scale: f32, offset: f32) -> i16 {
+    if scale == 0.0 {
+        return 0;
+    }
+    let q0 = ((v as f64 - offset as f64) / scale as f64).round().clamp(-(Q_MAX as f64), Q_MAX as f64) as i32;
+    let mut best = (q0, f64::INFINITY);
+    for q in [q0, q0 - 1, q0 + 1] {
+        if q.abs() <= Q_MAX {
+            let err = (dequantize(q as i16, scale, offset) as f64 - v as f64).abs();
+            if err < best.1 {
+                best = (q, err);
+            }
+        }
+    }
+    best.0 as i16
+}
+
+/// A unit-range component in steps of 1/32767.
+fn quantize_unit(v: f32) -> i16 {
+    (v as f64 * Q_MAX as f64).round().clamp(-(Q_MAX as f64), Q_MAX as f64) as i16
+}
+
+/// The angle between two vectors in degrees (0 if either is zero), from
+/// atan2(|a × b|, a · b), which stays accurate for tiny angles.
+fn angle_degrees(a: Vec3, b: Vec3) -> f64 {
+    let a = [a.x as f64, a.y as f64, a.z as f64];
+    let b = [b.x as f64, b.y as f64, b.z as f64];
+    let dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let c = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let cross = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+    let zero = |v: [f64; 3]| v.iter().all(|c| *c == 0.0);
+    if zero(a) || zero(b) {
+        0.0
+    } else {
+        cross.atan2(dot).to_degrees()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extremes_stay_in_range_and_errors_are_half_a_step() {
+        let p = [Vec3::new(-1.0, 0.0, 5.0), Vec3::new(3.0, 0.0, 5.0), Vec3::new(0.123, 0.0, 5.0)];
+        let n = [Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.6, 0.8, 0.0)];
+        let q = quantize("t", &p, &n).unwrap();
+        assert_eq!(q.positions[0][0], -32767);
+        assert_eq!(q.positions[1][0], 32767);
+        assert_eq!(q.position_offset, [1.0, 0.0, 5.0]);
+        assert_eq!(q.position_scale[1], 0.0); // flat axes dequantize to the offset exactly
+        let d = q.dequantized_positions();
+        assert_eq!((d[0].y, d[0].z), (0.0, 5.0));
+        assert!((d[0].x + 1.0).abs() < 1e-6, "{:?}", d[0]);
+        assert!(q.error.max_axis_steps <= 0.5 + 1e-3, "{:?}", q.error);
+        assert_eq!(q.normals[0], [32767, 0, 0]);
+        assert!(q.error.max_normal_degrees < 0.01);
+    }
+
+    #[test]
+    fn non_finite_is_an_error() {
+        let p = [Vec3::new(f32::INFINITY, 0.0, 0.0)];
+        assert!(quantize("t", &p, &[Vec3::ZERO]).is_err());
+    }
+
+    #[test]
+    fn angles() {
+        assert!((angle_degrees(Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)) - 90.0).abs() < 1e-9);
+        assert_eq!(angle_degrees(Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0)), 0.0);
+    }
+}
