@@ -1,13 +1,21 @@
 //! Host side of the target benchmark: renders the benchmark scenes exactly
-//! as `firmware/qemu-bench` does and prints `scene,mode,checksum` lines for
-//! `scripts/target-bench.sh` to compare with the emulated Cortex-M.
+//! as `firmware/qemu-bench` does and prints `scene,mode,checksum,drawn`
+//! lines for `scripts/target-bench.sh` to compare with the emulated
+//! Cortex-M. The scenes from `../shared/assets` are parsed here at run time
+//! and baked into the firmware: equal checksums also show that baking
+//! changes nothing.
 
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::RgbColor;
-use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VERTICES};
+use soft3d::host::scene::HostScene;
+use soft3d::scenes::{
+    demo_camera, demo_lights, draw_bench, headlight, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VERTICES, FILE_SCENES, WHITE,
+};
 use soft3d::{HostRenderer, Settings};
 
-fn run<S: Settings>(mode: &str) {
+const ASSETS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/assets");
+
+fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
     let mut r: HostRenderer<Rgb565, 3, S> =
         HostRenderer::new(320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).expect("valid sizes");
     for (i, name) in BENCH_SCENES.iter().enumerate() {
@@ -17,9 +25,32 @@ fn run<S: Settings>(mode: &str) {
         let Ok(_) = frame.finish(&mut sink);
         println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
     }
+    for (name, scene) in files {
+        let camera = scene.camera_or_default();
+        let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
+        for m in &scene.meshes {
+            frame.draw(&m.mesh(), &m.model, &WHITE).expect("the scene fits its buffers");
+        }
+        let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
+        let Ok(_) = frame.finish(&mut sink);
+        println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
+    }
 }
 
 fn main() {
-    run::<soft3d::FixedPoint>("fixed");
-    run::<soft3d::FloatingPoint>("f32");
+    let files: Vec<(&str, HostScene)> = FILE_SCENES
+        .iter()
+        .filter_map(|(name, file)| {
+            let path = format!("{ASSETS}/{file}");
+            match HostScene::load(&path) {
+                Ok(s) => Some((*name, s)),
+                Err(e) => {
+                    eprintln!("bench_host: skipped {name}: {e}");
+                    None
+                }
+            }
+        })
+        .collect();
+    run::<soft3d::FixedPoint>("fixed", &files);
+    run::<soft3d::FloatingPoint>("f32", &files);
 }

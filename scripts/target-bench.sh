@@ -31,7 +31,7 @@ for c in "$(rustc --print sysroot)/lib/rustlib/x86_64-unknown-linux-gnu/bin/llvm
   if [ -n "$c" ] && [ -x "$c" ]; then size_tool=$c; break; fi
 done
 
-host=$(cargo run -q --release --example bench_host --no-default-features --features libm,std)
+host=$(cargo run -q --release --example bench_host --features simulator)
 rows=""
 declare -A flash
 for t in thumbv7em-none-eabihf thumbv6m-none-eabi; do

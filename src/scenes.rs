@@ -68,6 +68,24 @@ where
     frame.draw(&SPHERE, &sphere, &GREEN)
 }
 
+/// The lighting of the comparison benchmarks: ambient 0.15 and a white
+/// directional light of 0.85 shining along the view direction.
+pub fn headlight(camera: &Camera) -> Lights {
+    Lights {
+        ambient: Vec3::new(0.15, 0.15, 0.15),
+        point: None,
+        directional: Some(DirectionalLight { direction: camera.target - camera.position, color: Vec3::new(0.85, 0.85, 0.85) }),
+    }
+}
+
+/// White Gouraud shading, the material of the benchmark scenes drawn from
+/// Blender exports.
+pub static WHITE: Material<Gouraud> = Material::new(Gouraud);
+
+/// The benchmark scenes drawn from the shared Blender exports (when
+/// available), each with its file's camera, [`headlight`] and [`WHITE`].
+pub const FILE_SCENES: [(&str, &str); 2] = [("torus.babylon", "torus.babylon"), ("monkey", "monkey.babylon")];
+
 /// Names of the benchmark scenes, in the order [`draw_bench`] takes them.
 pub const BENCH_SCENES: [&str; 5] = ["empty", "fill", "torus", "demo-t0", "demo-t1.7"];
 

@@ -1,8 +1,35 @@
-//! Puts memory.x where the linker finds it.
+//! Puts memory.x where the linker finds it, and bakes the shared Blender
+//! exports (when `../shared/assets` is there) into Rust statics with
+//! `tools/bake`, so the benchmark draws them from flash exactly as the host
+//! parses them.
+use std::path::{Path, PathBuf};
+
 fn main() {
-    let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").unwrap());
+    let out = PathBuf::from(std::env::var_os("OUT_DIR").unwrap());
     std::fs::copy("memory.x", out.join("memory.x")).unwrap();
     println!("cargo:rustc-link-search={}", out.display());
     println!("cargo:rerun-if-changed=memory.x");
     println!("cargo:rerun-if-env-changed=SOFT3D_BENCH_ONLY");
+    println!("cargo::rustc-check-cfg=cfg(soft3d_assets)");
+
+    let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/assets");
+    println!("cargo:rerun-if-changed={}", assets.display());
+    let scenes = [("torus.babylon", "torus_file.rs"), ("monkey.babylon", "monkey_file.rs")];
+    if !scenes.iter().all(|(file, _)| assets.join(file).exists()) {
+        println!("cargo:warning=../shared/assets is absent: the Babylon benchmark scenes are skipped");
+        return;
+    }
+    // Geometry only: the benchmark draws these scenes untextured.
+    let options = soft3d_bake::Options { texture_format: soft3d_bake::TextureFormat::None, ..Default::default() };
+    for (file, rust) in scenes {
+        match soft3d_bake::bake_file(&assets.join(file), &out.join(rust), &options) {
+            Ok(report) => {
+                for input in report.inputs {
+                    println!("cargo:rerun-if-changed={}", input.display());
+                }
+            }
+            Err(e) => panic!("baking {file}: {e}"),
+        }
+    }
+    println!("cargo:rustc-cfg=soft3d_assets");
 }

@@ -10,7 +10,7 @@ use crate::material::{Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::{Mesh, Sphere};
 use crate::renderer::{DrawError, Frame};
-use crate::scene::{Camera, DirectionalLight, Lights};
+use crate::scene::{Camera, Lights};
 use crate::settings::Settings;
 use crate::texture::{Filter, Texture, Wrap};
 use std::boxed::Box;
@@ -291,11 +291,7 @@ impl HostScene {
     /// A directional light along the view direction with ambient 0.15 and
     /// diffuse 0.85: the lighting of the benchmark comparisons.
     pub fn headlight(camera: &Camera) -> Lights {
-        Lights {
-            ambient: Vec3::new(0.15, 0.15, 0.15),
-            point: None,
-            directional: Some(DirectionalLight { direction: camera.target - camera.position, color: Vec3::new(0.85, 0.85, 0.85) }),
-        }
+        crate::scenes::headlight(camera)
     }
 }
 

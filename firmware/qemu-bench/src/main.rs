@@ -17,11 +17,32 @@
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
-use embedded_graphics::pixelcolor::Rgb565;
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VERTICES};
 use soft3d::{Renderer, Settings};
+
+/// The shared Blender exports, baked by `build.rs` (see `tools/bake`).
+#[cfg(soft3d_assets)]
+#[allow(missing_docs, dead_code)]
+mod torus_file {
+    include!(concat!(env!("OUT_DIR"), "/torus_file.rs"));
+}
+#[cfg(soft3d_assets)]
+#[allow(missing_docs, dead_code)]
+mod monkey_file {
+    include!(concat!(env!("OUT_DIR"), "/monkey_file.rs"));
+}
+
+/// The baked scenes, in the order of `FILE_SCENES`: camera and meshes.
+#[cfg(soft3d_assets)]
+fn file_scene(i: usize) -> (soft3d::Camera, &'static [(&'static soft3d::mesh::Mesh<'static>, soft3d::math::Mat4, Rgb888, soft3d::Cull)]) {
+    match i {
+        0 => (torus_file::CAMERA, &torus_file::MESHES),
+        _ => (monkey_file::CAMERA, &monkey_file::MESHES),
+    }
+}
 
 /// Instructions per SysTick tick under `-icount shift=0` at 25 MHz.
 const INSTRUCTIONS_PER_TICK: u32 = 40;
@@ -142,27 +163,67 @@ type BenchRenderer<S> = Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIAN
 fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     let mut renderer: BenchRenderer<S> = Renderer::new(Rgb565::BLACK);
     let ram = core::mem::size_of::<BenchRenderer<S>>();
-    let (camera, lights) = (demo_camera(), demo_lights());
     for (i, name) in BENCH_SCENES.iter().enumerate() {
-        if !selected(name, mode) {
-            continue;
+        if selected(name, mode) {
+            measure(timer, &mut renderer, name, mode, ram, |frame| {
+                let _ = draw_bench(frame, i);
+            });
         }
-        let mut out = TimedSink { inner: FrameChecksum::new(320, 240, Rgb565::BLACK), ticks: 0 };
-        let top = cortex_m::register::msp::read() as usize;
-        paint(top);
-        timer.start();
-        let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
-        let _ = draw_bench(&mut frame, i);
-        let geometry = timer.instructions();
-        let Ok(stats) = frame.finish(&mut out);
-        let total = timer.instructions();
-        let stack = stack_used(top);
-        let sink = out.ticks * INSTRUCTIONS_PER_TICK;
-        let (sum, queued) = (out.inner.sum, stats.queued);
-        match (total, geometry) {
-            (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{},{},{}", name, mode, TARGET, n, sink, queued, sum, g, stack, ram),
-            _ => hprintln!("{},{},{},overflow,{},{},{:08x},0,{},{}", name, mode, TARGET, sink, queued, sum, stack, ram),
+    }
+    #[cfg(soft3d_assets)]
+    for (i, (name, _)) in soft3d::scenes::FILE_SCENES.iter().enumerate() {
+        if selected(name, mode) {
+            let (camera, meshes) = file_scene(i);
+            measure_with(timer, &mut renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
+                for (mesh, model, _, _) in meshes {
+                    let _ = frame.draw(mesh, model, &soft3d::scenes::WHITE);
+                }
+            });
         }
+    }
+}
+
+type BenchFrame<'r, S> = soft3d::Frame<'r, 'static, Rgb565, 3, S>;
+
+fn measure<S: Settings>(
+    timer: &mut Timer,
+    renderer: &mut BenchRenderer<S>,
+    name: &str,
+    mode: &str,
+    ram: usize,
+    draw: impl FnOnce(&mut BenchFrame<'_, S>),
+) {
+    let (camera, lights) = (demo_camera(), demo_lights());
+    measure_with(timer, renderer, &camera, &lights, name, mode, ram, draw)
+}
+
+/// Renders one frame, timed, into the checksum sink and prints its line.
+#[allow(clippy::too_many_arguments)]
+fn measure_with<S: Settings>(
+    timer: &mut Timer,
+    renderer: &mut BenchRenderer<S>,
+    camera: &soft3d::Camera,
+    lights: &soft3d::Lights,
+    name: &str,
+    mode: &str,
+    ram: usize,
+    draw: impl FnOnce(&mut BenchFrame<'_, S>),
+) {
+    let mut out = TimedSink { inner: FrameChecksum::new(320, 240, Rgb565::BLACK), ticks: 0 };
+    let top = cortex_m::register::msp::read() as usize;
+    paint(top);
+    timer.start();
+    let mut frame = renderer.begin_frame(camera, lights, Rgb565::BLACK);
+    draw(&mut frame);
+    let geometry = timer.instructions();
+    let Ok(stats) = frame.finish(&mut out);
+    let total = timer.instructions();
+    let stack = stack_used(top);
+    let sink = out.ticks * INSTRUCTIONS_PER_TICK;
+    let (sum, queued) = (out.inner.sum, stats.queued);
+    match (total, geometry) {
+        (Some(n), Some(g)) => hprintln!("{},{},{},{},{},{},{:08x},{},{},{}", name, mode, TARGET, n, sink, queued, sum, g, stack, ram),
+        _ => hprintln!("{},{},{},overflow,{},{},{:08x},0,{},{}", name, mode, TARGET, sink, queued, sum, stack, ram),
     }
 }
 
