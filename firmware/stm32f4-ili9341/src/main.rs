@@ -44,10 +44,10 @@ const STRIP: usize = 16;
 
 type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, 3, FloatingPoint>;
 
-/// The renderer's buffers (about 80 KB), built at compile time (`Renderer::new`
-/// is a `const fn`) so that they never pass through the stack. Their initial
-/// contents are not all zero, so they sit in `.data`: startup copies them
-/// from flash.
+/// The renderer's buffers (73 KB), built at compile time (`Renderer::new`
+/// is a `const fn`) so that they never pass through the stack. A renderer
+/// with a black fill is all zeros, so it sits in `.bss`: no flash image,
+/// nothing copied at startup.
 static RENDERER: ConstStaticCell<DemoRenderer> = ConstStaticCell::new(Renderer::new(Rgb565::BLACK));
 
 #[entry]
