@@ -7,6 +7,7 @@
 //! its own span loop, so there is no per-pixel branch on a feature, and an
 //! effect that no draw call uses is not in the binary.
 
+use crate::blend::{scale_alpha, Blend, Opaque};
 use crate::math::{Interp, Vec2, Vec3};
 use crate::scene::Lighting;
 use crate::texture::{Filter, Nearest, Repeat, Texture, Wrap};
@@ -272,35 +273,47 @@ fn rescale(v: u32, from_max: u32, to_max: u8) -> u8 {
 
 /// A texture modulated by the lit material color: Gouraud lighting (N·L
 /// per vertex, interpolated) times the texel, which `F` filters and `W`
-/// wraps. Texture coordinates are interpolated in texel units. Use it with
+/// wraps, written over the strip by `B` ([`Opaque`] by default; with
+/// [`AlphaBlend`](crate::blend::AlphaBlend) the texel's alpha times the
+/// material's opacity, untouched by the lighting, mixes it with what is
+/// there). Texture coordinates are interpolated in texel units. Use it with
 /// [`PerPixel`](crate::material::PerPixel) or
 /// [`PerSpan`](crate::material::PerSpan) so the texture does not swim.
 ///
 /// Varyings: `u · width`, `v · height`, then the lit color's red, green
 /// and blue in `[0, 256)` (5 in all, so the renderer needs `V >= 5`).
-pub struct Textured<'a, F = Nearest, W = Repeat> {
+pub struct Textured<'a, F = Nearest, W = Repeat, B = Opaque> {
     /// The texture.
     pub texture: Texture<'a>,
-    _modes: core::marker::PhantomData<(F, W)>,
+    /// Opacity of the material, 0 to 255, multiplying the texels' alpha
+    /// (only read when `B` blends).
+    pub opacity: u8,
+    _modes: core::marker::PhantomData<(F, W, B)>,
 }
 
 // Not derived: the marker types need not be `Copy` themselves.
-impl<F, W> Clone for Textured<'_, F, W> {
+impl<F, W, B> Clone for Textured<'_, F, W, B> {
     fn clone(&self) -> Self {
         *self
     }
 }
-impl<F, W> Copy for Textured<'_, F, W> {}
-impl<F, W> core::fmt::Debug for Textured<'_, F, W> {
+impl<F, W, B> Copy for Textured<'_, F, W, B> {}
+impl<F, W, B> core::fmt::Debug for Textured<'_, F, W, B> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Textured").field("texture", &self.texture).finish()
+        f.debug_struct("Textured").field("texture", &self.texture).field("opacity", &self.opacity).finish()
     }
 }
 
-impl<'a, F: Filter, W: Wrap> Textured<'a, F, W> {
-    /// The effect for `texture`.
+impl<'a, F: Filter, W: Wrap, B: Blend> Textured<'a, F, W, B> {
+    /// The effect for `texture`, fully opaque material.
     pub const fn new(texture: Texture<'a>) -> Self {
-        Self { texture, _modes: core::marker::PhantomData }
+        Self { texture, opacity: 255, _modes: core::marker::PhantomData }
+    }
+
+    /// The same with the material's opacity (0 to 255; Babylon's `alpha`
+    /// times 255).
+    pub const fn with_opacity(self, opacity: u8) -> Self {
+        Self { opacity, ..self }
     }
 }
 
@@ -310,7 +323,7 @@ const TEXEL_RANGE: (f32, f32) = (-30_000.0, 30_000.0);
 /// Range of a light channel: its integer part scales a texel by `(l + 1) / 256`.
 const LIGHT_RANGE: (f32, f32) = (0.0, 255.996);
 
-impl<F: Filter, W: Wrap> Effect for Textured<'_, F, W> {
+impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
     type Uniforms<S: Interp> = ();
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 5;
@@ -352,13 +365,16 @@ impl<F: Filter, W: Wrap> Effect for Textured<'_, F, W> {
     }
 
     #[inline(always)]
-    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
-        let (r, g, b) = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16());
+    fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], dst: C) -> C {
+        let t = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16(), B::ALPHA);
         let light = |t: u32, l: S| (t * (l.channel() as u32 + 1)) >> 8;
-        C::from_channels(
-            rescale(light(r, v[2]), 31, C::MAX_R),
-            rescale(light(g, v[3]), 63, C::MAX_G),
-            rescale(light(b, v[4]), 31, C::MAX_B),
+        let alpha = if B::ALPHA { scale_alpha(t.a, self.opacity) } else { 255 };
+        B::blend(
+            rescale(light(t.r, v[2]), 31, C::MAX_R),
+            rescale(light(t.g, v[3]), 63, C::MAX_G),
+            rescale(light(t.b, v[4]), 31, C::MAX_B),
+            alpha,
+            dst,
         )
     }
 }

@@ -46,6 +46,7 @@ extern crate std;
 
 #[cfg(feature = "babylon")]
 pub mod babylon;
+pub mod blend;
 pub mod clip;
 pub mod effect;
 #[cfg(feature = "simulator")]

@@ -49,7 +49,7 @@ fn compare(a: &Image<Rgb565>, b: &Image<Rgb565>) -> (usize, u8) {
 fn textured_monkey_and_torus_golden_images() {
     if let Some(monkey) = load("monkey.babylon") {
         assert_eq!(monkey.textures.len(), 1);
-        assert_eq!((monkey.textures[0].width, monkey.textures[0].height), (512, 512));
+        assert_eq!((monkey.textures[0].image.width, monkey.textures[0].image.height), (512, 512));
         golden("monkey-textured", &render::<FixedPoint>(&monkey, 160, 120));
     }
     if let Some(torus) = load("torus.babylon") {
@@ -70,4 +70,70 @@ fn fixed_and_f32_agree_on_the_shared_scenes() {
         // and a texel boundary may fall on the other side of a pixel center.
         assert!(differ * 10 <= drawn, "{name}: {differ} of {drawn} differ");
     }
+}
+
+/// A scene of two quads facing the camera, lit by a directional light along
+/// the view (so each quad is evenly lit): first in the file a textured quad
+/// whose 4×1 PNG is green with alphas `alphas`, in front of an untextured
+/// red quad twice its size. Material opacity `opacity`.
+fn translucent_scene(dir: &std::path::Path, alphas: [u8; 4], opacity: f32) -> HostScene {
+    let png: Vec<u8> = alphas.iter().flat_map(|&a| [0, 255, 0, a]).collect();
+    soft3d::host::write_png(&dir.join("glass.png"), 4, 1, png::ColorType::Rgba, &png).unwrap();
+    let quad = |s: f32, z: f32, uv: bool| {
+        let v = [(-s, -s, 0.0, 0.0), (s, -s, 1.0, 0.0), (s, s, 1.0, 1.0), (-s, s, 0.0, 1.0)];
+        v.iter()
+            .map(|&(x, y, u, w)| if uv { format!("{x},{y},{z},0,0,-1,{u},{w}") } else { format!("{x},{y},{z},0,0,-1") })
+            .collect::<Vec<_>>()
+            .join(",")
+    };
+    let json = format!(
+        r#"{{"cameras":[{{"name":"C","id":"C","position":[0,0,-4],"target":[0,0,0],"fov":0.9,"minZ":0.5,"maxZ":50}}],"activeCamera":"C",
+"lights":[{{"name":"Sun","id":"Sun","type":1,"direction":[0,0,1],"intensity":1,"diffuse":[1,1,1]}}],
+"materials":[{{"name":"Glass","id":"Glass","diffuse":[1,1,1],"alpha":{opacity},"backFaceCulling":false,"diffuseTexture":{{"name":"glass.png","hasAlpha":1}}}},
+ {{"name":"Red","id":"Red","diffuse":[1,0,0],"alpha":1,"backFaceCulling":false}}],
+"meshes":[{{"name":"Front","id":"Front","materialId":"Glass","uvCount":1,"vertices":[{}],"indices":[0,2,1,0,3,2]}},
+ {{"name":"Back","id":"Back","materialId":"Red","uvCount":0,"vertices":[{}],"indices":[0,2,1,0,3,2]}}]}}"#,
+        quad(1.0, 0.0, true),
+        quad(2.0, 1.0, false)
+    );
+    std::fs::write(dir.join("glass.babylon"), json).unwrap();
+    let scene = HostScene::load(dir.join("glass.babylon")).unwrap_or_else(|e| panic!("{e}"));
+    assert!(scene.warnings.is_empty(), "{:?}", scene.warnings);
+    scene
+}
+
+/// Alpha survives lighting: the texel's alpha times the material's opacity
+/// mixes the lit texel over what is behind, whatever the file order; alpha
+/// 0 leaves the red quad visible, 255 hides it.
+#[test]
+fn translucent_textures_blend_over_what_is_behind() {
+    let dir = std::env::temp_dir().join(format!("soft3d-alpha-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (alphas, opacity) in [([255, 128, 0, 255], 1.0), ([255, 255, 255, 255], 0.5)] {
+        let scene = translucent_scene(&dir, alphas, opacity);
+        let (w, h) = (160, 120);
+        for img in [render::<FixedPoint>(&scene, w, h), render::<FloatingPoint>(&scene, w, h)] {
+            // The front quad spans about x 52..108 at this distance; sample
+            // the middle of each texel's quarter, and the red quad beside it.
+            let at = |x: usize| img.get(x as u32, 60);
+            let red = at(40);
+            assert!(red.r() > 20 && red.g() == 0 && red.b() == 0, "red quad: {red:?}");
+            let green = Rgb565::new(0, 63, 0);
+            let expect = |a: f64| {
+                let a = a * opacity as f64;
+                let mix = |s: u8, d: u8| s as f64 * a + d as f64 * (1.0 - a);
+                (mix(green.r(), red.r()), mix(green.g(), red.g()), mix(green.b(), red.b()))
+            };
+            for (quarter, &alpha) in alphas.iter().enumerate() {
+                let c = at(59 + quarter * 14);
+                let (r, g, b) = expect(alpha as f64 / 255.0);
+                let close = |got: u8, want: f64| (got as f64 - want).abs() <= 1.0;
+                assert!(
+                    close(c.r(), r) && close(c.g(), g) && close(c.b(), b),
+                    "quarter {quarter} alpha {alpha} opacity {opacity}: {c:?}, want ({r:.1}, {g:.1}, {b:.1})"
+                );
+            }
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

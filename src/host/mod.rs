@@ -4,11 +4,11 @@
 
 pub mod scene;
 
+use crate::texture::OwnedTexture;
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
 use embedded_graphics::prelude::{OriginDimensions, Pixel, Point, Size};
 use embedded_graphics::primitives::Rectangle;
-use std::format;
 use std::fs::File;
 use std::io::{self, BufWriter};
 use std::path::Path;
@@ -107,64 +107,18 @@ pub fn write_png(path: &Path, width: u32, height: u32, color: png::ColorType, da
     writer.finish().map_err(io::Error::other)
 }
 
-/// Reads an 8-bit RGB, RGBA, gray or gray-alpha PNG as RGB pixels.
+/// Reads an 8-bit RGB, RGBA, gray or gray-alpha PNG as RGB pixels (alpha
+/// dropped).
 pub fn load_png(path: impl AsRef<Path>) -> io::Result<Image<Rgb888>> {
-    let dec = png::Decoder::new(File::open(path)?);
-    let mut reader = dec.read_info().map_err(io::Error::other)?;
-    let mut buf = std::vec![0; reader.output_buffer_size()];
-    let info = reader.next_frame(&mut buf).map_err(io::Error::other)?;
-    if info.bit_depth != png::BitDepth::Eight {
-        return Err(io::Error::other("only 8-bit PNGs are supported"));
-    }
-    let n = info.color_type.samples();
-    let pixels = buf[..info.buffer_size()]
-        .chunks_exact(n)
-        .map(|p| match n {
-            1 | 2 => Rgb888::new(p[0], p[0], p[0]),
-            _ => Rgb888::new(p[0], p[1], p[2]),
-        })
-        .collect();
-    Ok(Image { width: info.width, height: info.height, pixels, fills: 0 })
+    let (width, height, rgba) = crate::texture::read_png(path.as_ref())?;
+    let pixels = rgba.iter().map(|p| Rgb888::new(p[0], p[1], p[2])).collect();
+    Ok(Image { width, height, pixels, fills: 0 })
 }
 
-/// Reads a baseline JPEG as RGB pixels.
-pub fn load_jpeg(path: impl AsRef<Path>) -> io::Result<Image<Rgb888>> {
-    let mut dec = jpeg_decoder::Decoder::new(io::BufReader::new(File::open(path)?));
-    let data = dec.decode().map_err(io::Error::other)?;
-    let info = dec.info().ok_or_else(|| io::Error::other("JPEG without a header"))?;
-    let pixels = match info.pixel_format {
-        jpeg_decoder::PixelFormat::RGB24 => data.chunks_exact(3).map(|p| Rgb888::new(p[0], p[1], p[2])).collect(),
-        jpeg_decoder::PixelFormat::L8 => data.iter().map(|&v| Rgb888::new(v, v, v)).collect(),
-        other => return Err(io::Error::other(format!("unsupported JPEG pixel format {other:?}"))),
-    };
-    Ok(Image { width: info.width as u32, height: info.height as u32, pixels, fills: 0 })
-}
-
-/// Reads a PNG or JPEG (by extension) as a texture: RGB565 texels and a
-/// power-of-two size. Images whose sides are not powers of two are
-/// resampled (nearest texel) down to the next power of two.
-pub fn load_texture(path: impl AsRef<Path>) -> io::Result<(Vec<u16>, usize, usize)> {
-    let path = path.as_ref();
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
-    let img = match ext.as_str() {
-        "png" => load_png(path)?,
-        "jpg" | "jpeg" => load_jpeg(path)?,
-        _ => return Err(io::Error::other("unsupported texture format (PNG or JPEG)")),
-    };
-    if img.width == 0 || img.height == 0 {
-        return Err(io::Error::other("empty image"));
-    }
-    let pow2 = |v: u32| (1u32 << (31 - v.leading_zeros())).min(1 << 15) as usize;
-    let (w, h) = (pow2(img.width), pow2(img.height));
-    let mut texels = Vec::with_capacity(w * h);
-    for y in 0..h {
-        for x in 0..w {
-            let c = img.get((x as u32 * img.width) / w as u32, (y as u32 * img.height) / h as u32);
-            let c565: embedded_graphics::pixelcolor::Rgb565 = c.into();
-            texels.push(embedded_graphics::pixelcolor::IntoStorage::into_storage(c565));
-        }
-    }
-    Ok((texels, w, h))
+/// Reads a PNG or JPEG (by extension) as a texture: see
+/// [`OwnedTexture::load`] (the bake tool's loader too).
+pub fn load_texture(path: impl AsRef<Path>) -> io::Result<OwnedTexture> {
+    OwnedTexture::load(path.as_ref(), 1 << 15)
 }
 
 /// Collects frames into an animated GIF.

@@ -5,6 +5,7 @@
 
 use super::load_texture;
 use crate::babylon::{BabylonScene, Error as BabylonError};
+use crate::blend::{AlphaBlend, Opaque};
 use crate::effect::{BlinnPhong, Color, Gouraud, Textured};
 use crate::material::{Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
@@ -12,7 +13,7 @@ use crate::mesh::{Mesh, Sphere};
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, Lights};
 use crate::settings::Settings;
-use crate::texture::{Filter, Texture, Wrap};
+use crate::texture::{Filter, OwnedTexture, Texture, Wrap};
 use std::boxed::Box;
 use std::format;
 use std::path::{Path, PathBuf};
@@ -95,23 +96,19 @@ pub struct OwnedMaterial {
     pub texture: Option<usize>,
 }
 
-/// A decoded texture: RGB565 texels, power-of-two size.
+/// A decoded texture and the file it came from.
 #[derive(Clone, Debug)]
-pub struct OwnedTexture {
+pub struct SceneTexture {
     /// File it came from.
     pub path: PathBuf,
-    /// RGB565 texels, row-major, top row first.
-    pub texels: Vec<u16>,
-    /// Width.
-    pub width: usize,
-    /// Height.
-    pub height: usize,
+    /// RGB565 texels (and alpha, if the image has transparent pixels).
+    pub image: OwnedTexture,
 }
 
-impl OwnedTexture {
+impl SceneTexture {
     /// The texture view.
     pub fn texture(&self) -> Texture<'_> {
-        Texture::new(&self.texels, self.width, self.height).unwrap_or(ONE_TEXEL)
+        self.image.texture().unwrap_or(ONE_TEXEL)
     }
 }
 
@@ -128,7 +125,7 @@ pub struct HostScene {
     /// Materials.
     pub materials: Vec<OwnedMaterial>,
     /// Textures.
-    pub textures: Vec<OwnedTexture>,
+    pub textures: Vec<SceneTexture>,
     /// The file's camera, if it has one.
     pub camera: Option<Camera>,
     /// The file's lights (a default light if it has none).
@@ -162,7 +159,7 @@ impl HostScene {
         parser.load(&json).map_err(|e| SceneError::Babylon(path.to_path_buf(), Box::new(e)))?;
         let dir = path.parent().unwrap_or(Path::new("."));
         let mut warnings = Vec::new();
-        let mut textures: Vec<OwnedTexture> = Vec::new();
+        let mut textures: Vec<SceneTexture> = Vec::new();
         let materials = parser
             .materials()
             .iter()
@@ -173,8 +170,8 @@ impl HostScene {
                         return Some(i);
                     }
                     match load_texture(&file) {
-                        Ok((texels, width, height)) => {
-                            textures.push(OwnedTexture { path: file, texels, width, height });
+                        Ok(image) => {
+                            textures.push(SceneTexture { path: file, image });
                             Some(textures.len() - 1)
                         }
                         Err(e) => {
@@ -244,45 +241,63 @@ impl HostScene {
                 m.base.configure(Material::new(BlinnPhong::with_specular(specular, m.base.specular_power)))
             })
             .collect();
-        let textured = self
-            .materials
-            .iter()
-            .map(|m| {
-                let t = m.texture.map(|t| self.textures[t].texture());
-                t.map(|t| m.base.configure(Material::new(Textured::<F, W>::new(t))).with_perspective::<P>())
-            })
-            .collect();
+        // Opaque texturing unless the texture has alpha or the material is
+        // translucent: only those pay for blending.
+        let mut textured = Vec::new();
+        let mut blended = Vec::new();
+        for m in &self.materials {
+            let t = m.texture.and_then(|t| self.textures.get(t));
+            let opacity = (m.base.alpha.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
+            let blend = t.is_some_and(|t| t.image.alpha.is_some()) || opacity < 255;
+            let t = t.map(SceneTexture::texture);
+            let opaque = t.filter(|_| !blend).map(Textured::<F, W, Opaque>::new);
+            let translucent = t.filter(|_| blend).map(|t| Textured::<F, W, AlphaBlend>::new(t).with_opacity(opacity));
+            textured.push(opaque.map(|e| m.base.configure(Material::new(e)).with_perspective::<P>()));
+            blended.push(translucent.map(|e| m.base.configure(Material::new(e)).with_perspective::<P>()));
+        }
         SceneMaterials {
             choice,
             lit,
             flat,
             phong,
             textured,
+            blended,
             default: Material::new(Gouraud).with_color(embedded_graphics::pixelcolor::Rgb888::new(200, 200, 200)),
         }
     }
 
-    /// Draws every mesh, each placed by `spin * model`. The renderer must
-    /// store 6 varyings per vertex (`V >= 6`).
+    /// Draws every mesh, each placed by `spin * model`: the opaque ones in
+    /// file order, then the translucent (blended) ones, so what shows
+    /// through them is already there. The renderer must store 6 varyings
+    /// per vertex (`V >= 6`).
     pub fn draw<'m, C: Color, const V: usize, S: Settings, F: Filter, W: Wrap, P: Perspective>(
         &self,
         frame: &mut Frame<'_, 'm, C, V, S>,
         materials: &'m SceneMaterials<'m, F, W, P>,
         spin: &Mat4,
     ) -> Result<(), DrawError> {
-        for m in &self.meshes {
-            let model = *spin * m.model;
-            let mesh = m.mesh();
-            match (materials.choice, m.material) {
-                (EffectChoice::Flat, Some(i)) => frame.draw(&mesh, &model, &materials.flat[i])?,
-                (EffectChoice::Phong, Some(i)) => frame.draw(&mesh, &model, &materials.phong[i])?,
-                (EffectChoice::Auto, Some(i)) if m.uvs.is_some() && materials.textured[i].is_some() => {
-                    if let Some(t) = &materials.textured[i] {
-                        frame.draw(&mesh, &model, t)?
+        let blended = |m: &OwnedMesh| {
+            materials.choice == EffectChoice::Auto
+                && m.uvs.is_some()
+                && m.material.is_some_and(|i| materials.blended.get(i).is_some_and(Option::is_some))
+        };
+        for translucent in [false, true] {
+            for m in self.meshes.iter().filter(|m| blended(m) == translucent) {
+                let model = *spin * m.model;
+                let mesh = m.mesh();
+                match (materials.choice, m.material) {
+                    (EffectChoice::Flat, Some(i)) => frame.draw(&mesh, &model, &materials.flat[i])?,
+                    (EffectChoice::Phong, Some(i)) => frame.draw(&mesh, &model, &materials.phong[i])?,
+                    (EffectChoice::Auto, Some(i)) if m.uvs.is_some() && (materials.textured[i].is_some() || translucent) => {
+                        if let Some(t) = &materials.textured[i] {
+                            frame.draw(&mesh, &model, t)?
+                        } else if let Some(t) = &materials.blended[i] {
+                            frame.draw(&mesh, &model, t)?
+                        }
                     }
+                    (_, Some(i)) => frame.draw(&mesh, &model, &materials.lit[i])?,
+                    (_, None) => frame.draw(&mesh, &model, &materials.default)?,
                 }
-                (_, Some(i)) => frame.draw(&mesh, &model, &materials.lit[i])?,
-                (_, None) => frame.draw(&mesh, &model, &materials.default)?,
             }
         }
         Ok(())
@@ -295,12 +310,16 @@ impl HostScene {
     }
 }
 
+/// A textured material of a scene.
+type TexturedMaterial<'s, F, W, B, P> = Material<Textured<'s, F, W, B>, P>;
+
 /// The materials a [`HostScene`] is drawn with (see [`HostScene::materials`]).
 pub struct SceneMaterials<'s, F, W, P> {
     choice: EffectChoice,
     lit: Vec<Material<Gouraud>>,
     flat: Vec<Material<crate::effect::Flat>>,
     phong: Vec<Material<BlinnPhong>>,
-    textured: Vec<Option<Material<Textured<'s, F, W>, P>>>,
+    textured: Vec<Option<TexturedMaterial<'s, F, W, Opaque, P>>>,
+    blended: Vec<Option<TexturedMaterial<'s, F, W, AlphaBlend, P>>>,
     default: Material<Gouraud>,
 }

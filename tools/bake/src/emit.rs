@@ -161,10 +161,19 @@ const fn {dequantize}<const N: usize>(q: &[[i16; 3]; N], scale: [f32; 3], offset
         match &t.texels {
             Texels::Rgb565(texels) => {
                 let _ = writeln!(o, "/// Texture {} for `soft3d::effect::Textured`, validated at compile time.", quoted(&t.name));
+                // With an alpha plane, the texture carries it (for `AlphaBlend`).
+                let new = format!("::soft3d::texture::Texture::new(&{id}_TEXELS, {id}_TEXTURE_WIDTH, {id}_TEXTURE_HEIGHT)");
+                let new = if t.alpha.is_some() {
+                    format!(
+                        "match {new} {{\n        ::core::result::Result::Ok(texture) => texture.with_alpha(&{id}_ALPHA),\n        error => error,\n    }}"
+                    )
+                } else {
+                    new
+                };
                 let _ = writeln!(
                     o,
                     "pub static {id}_TEXTURE: ::soft3d::texture::Texture<'static> =
-    match ::soft3d::texture::Texture::new(&{id}_TEXELS, {id}_TEXTURE_WIDTH, {id}_TEXTURE_HEIGHT) {{
+    match {new} {{
         ::core::result::Result::Ok(texture) => texture,
         ::core::result::Result::Err(_) => ::core::panic!(\"baked texture {id} is invalid\"),
     }};\n"
@@ -186,6 +195,12 @@ const fn {dequantize}<const N: usize>(q: &[[i16; 3]; N], scale: [f32; 3], offset
             }
         }
         let _ = writeln!(o, "];\n");
+        if let Some(alpha) = &t.alpha {
+            let _ = writeln!(o, "/// Alpha of {}: one byte per texel in the order of the texels, 0 transparent.", quoted(&t.name));
+            let _ = writeln!(o, "pub static {id}_ALPHA: [u8; {n}] = [");
+            packed(&mut o, alpha.iter().map(|a| a.to_string()));
+            let _ = writeln!(o, "];\n");
+        }
     }
     while o.ends_with("\n\n") {
         o.pop();

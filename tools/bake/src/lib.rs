@@ -252,6 +252,9 @@ pub struct BakedTexture {
     pub size: (u32, u32),
     /// The texels.
     pub texels: Texels,
+    /// One alpha byte per texel (0 transparent, 255 opaque), if any pixel
+    /// of the image is not opaque.
+    pub alpha: Option<Vec<u8>>,
     /// PSNR in dB of the RGB565 texels against the (resized) 8-bit image.
     pub psnr_rgb565: f64,
     /// In `palette8` mode, PSNR in dB of the palette image against the

@@ -2,14 +2,12 @@
 //! RGB565, optionally reduce to a 256-color palette.
 
 use crate::{BakeError, BakedTexture, Texels, TextureFormat};
-use image::imageops::FilterType;
+use soft3d::texture::{read_image, resample, OwnedTexture};
 use std::path::Path;
 
-/// RGB888 to RGB565 with rounding to the nearest level (not truncation).
-pub fn rgb565(r: u8, g: u8, b: u8) -> u16 {
-    let q = |c: u8, max: u32| (c as u32 * max + 127) / 255;
-    ((q(r, 31) << 11) | (q(g, 63) << 5) | q(b, 31)) as u16
-}
+/// RGB888 to RGB565 with rounding to the nearest level: the core's
+/// conversion, which the simulator's texture loader uses too.
+pub use soft3d::texture::rgb565;
 
 /// RGB565 back to RGB888, each level to the nearest 8-bit value.
 pub fn rgb565_to_rgb888(c: u16) -> [u8; 3] {
@@ -20,15 +18,11 @@ pub fn rgb565_to_rgb888(c: u16) -> [u8; 3] {
 /// The largest side `soft3d::texture::Texture` accepts.
 const MAX_SIDE: u32 = 1 << 15;
 
-/// The largest power of two not above `n` (n ≥ 1).
-fn pow2_floor(n: u32) -> u32 {
-    1 << (31 - n.max(1).leading_zeros())
-}
-
-/// Reads, decodes and converts one texture. Sizes that are not powers of
-/// two (or exceed `max_size`) are scaled down to the largest power of two
-/// that fits, per side, with a triangle (bilinear) filter whose footprint
-/// widens with the reduction, so every source pixel contributes.
+/// Reads, decodes and converts one texture with the core's
+/// `soft3d::texture::OwnedTexture::from_rgba`, exactly as the simulator's
+/// loader does: sides that are not powers of two (or exceed `max_size`) are
+/// averaged down per side to the largest power of two that fits; an alpha
+/// plane is kept if any pixel is not opaque.
 pub fn bake(
     name: &str,
     ident: String,
@@ -38,41 +32,52 @@ pub fn bake(
     warnings: &mut Vec<String>,
 ) -> Result<BakedTexture, BakeError> {
     let fail = |problem: String| BakeError::Texture { name: name.to_string(), path: path.to_path_buf(), problem };
-    let bytes = std::fs::read(path)
-        .map_err(|e| fail(format!("cannot read it: {e} (use --textures DIR to say where textures are, or --texture-format none)")))?;
-    let image = image::load_from_memory(&bytes).map_err(|e| fail(format!("cannot decode it (JPEG and PNG are supported): {e}")))?;
-    if image.color().has_alpha() && image.to_rgba8().pixels().any(|p| p.0[3] < 255) {
-        warnings.push(format!("texture '{name}': the alpha channel is dropped"));
+    // The core's reader, as the simulator uses: the same pixels from the same file.
+    if !path.is_file() {
+        return Err(fail("cannot read it: no such file (use --textures DIR to say where textures are, or --texture-format none)".into()));
     }
-    let mut rgb = image.to_rgb8();
-    let source_size = rgb.dimensions();
-    // soft3d's `Texture` takes sides up to 32768.
-    let limit = pow2_floor(max_size.unwrap_or(MAX_SIDE).clamp(1, MAX_SIDE));
-    let size = (pow2_floor(source_size.0).min(limit), pow2_floor(source_size.1).min(limit));
-    if size != source_size {
+    let (width, height, pixels) = read_image(path).map_err(|e| fail(format!("cannot decode it (JPEG and PNG are supported): {e}")))?;
+    let source_size = (width, height);
+    let limit = max_size.unwrap_or(MAX_SIDE).clamp(1, MAX_SIDE) as usize;
+    let owned =
+        OwnedTexture::from_rgba(width as usize, height as usize, &pixels, limit).map_err(|e| fail(format!("cannot decode it: {e}")))?;
+    let size = (owned.width as u32, owned.height as u32);
+    let resampled = if size == source_size {
+        pixels
+    } else {
         warnings.push(format!(
-            "texture '{name}': {}×{} resized to {}×{} (power-of-two sides{}; triangle filter)",
+            "texture '{name}': {}×{} resized to {}×{} (power-of-two sides{}; box filter)",
             source_size.0,
             source_size.1,
             size.0,
             size.1,
             max_size.map_or(String::new(), |m| format!(", at most {m}"))
         ));
-        rgb = image::imageops::resize(&rgb, size.0, size.1, FilterType::Triangle);
-    }
-    let source: Vec<[u8; 3]> = rgb.pixels().map(|p| p.0).collect();
-    let texels: Vec<u16> = source.iter().map(|&[r, g, b]| rgb565(r, g, b)).collect();
-    let expanded: Vec<[u8; 3]> = texels.iter().map(|&c| rgb565_to_rgb888(c)).collect();
+        resample(source_size.0 as usize, source_size.1 as usize, &pixels, owned.width, owned.height)
+    };
+    let source: Vec<[u8; 3]> = resampled.iter().map(|p| [p[0], p[1], p[2]]).collect();
+    let expanded: Vec<[u8; 3]> = owned.texels.iter().map(|&c| rgb565_to_rgb888(c)).collect();
     let psnr_rgb565 = psnr(&source, &expanded);
+    let alpha = owned.alpha;
     let (texels, psnr_palette) = match format {
         TextureFormat::Palette8 => {
-            let (palette, indices) = palettize(&texels);
+            let (palette, indices) = palettize(&owned.texels);
             let mapped: Vec<[u8; 3]> = indices.iter().map(|&i| rgb565_to_rgb888(palette[i as usize])).collect();
             (Texels::Palette8 { palette, indices }, Some(psnr(&expanded, &mapped)))
         }
-        _ => (Texels::Rgb565(texels), None),
+        _ => (Texels::Rgb565(owned.texels), None),
     };
-    Ok(BakedTexture { name: name.to_string(), ident, path: path.to_path_buf(), source_size, size, texels, psnr_rgb565, psnr_palette })
+    Ok(BakedTexture {
+        name: name.to_string(),
+        ident,
+        path: path.to_path_buf(),
+        source_size,
+        size,
+        texels,
+        alpha,
+        psnr_rgb565,
+        psnr_palette,
+    })
 }
 
 /// Peak signal-to-noise ratio in dB over the three channels (infinite for
@@ -258,11 +263,6 @@ mod tests {
             let [r, g, b] = rgb565_to_rgb888(v);
             assert_eq!(rgb565(r, g, b), v);
         }
-    }
-
-    #[test]
-    fn pow2() {
-        assert_eq!([1, 2, 3, 4, 500, 512, 513].map(pow2_floor), [1, 2, 2, 4, 256, 512, 512]);
     }
 
     #[test]

@@ -64,11 +64,15 @@ fn monkey_has_its_material_and_texture() {
     let Texels::Rgb565(texels) = &t.texels else { panic!("rgb565 expected") };
     assert_eq!(texels.len(), 512 * 512);
     // The texel values are the image's pixels, rounded to RGB565.
-    let image = image::open(common::ASSETS.to_string() + "/Suzanne.jpg").unwrap().to_rgb8();
+    let jpeg = std::path::PathBuf::from(common::ASSETS.to_string() + "/Suzanne.jpg");
+    let (_, _, pixels) = soft3d::texture::read_jpeg(&jpeg).unwrap();
     for (x, y) in [(0, 0), (511, 0), (0, 511), (256, 300), (100, 77)] {
-        let [r, g, b] = image.get_pixel(x, y).0;
-        assert_eq!(texels[(y * 512 + x) as usize], rgb565(r, g, b), "texel ({x}, {y})");
+        let [r, g, b, _] = pixels[y * 512 + x];
+        assert_eq!(texels[y * 512 + x], rgb565(r, g, b), "texel ({x}, {y})");
     }
+    // The simulator's loader gives the very same texels.
+    let loaded = soft3d::texture::OwnedTexture::load(&jpeg, 1 << 15).unwrap();
+    assert_eq!((&loaded.texels, &loaded.alpha), (texels, &t.alpha));
     assert!(baked.warnings.is_empty(), "{:?}", baked.warnings);
     assert!(baked.inputs.iter().any(|p| p.ends_with("Suzanne.jpg")));
 }
@@ -210,6 +214,29 @@ fn other_sizes_are_scaled_down_to_powers_of_two_with_a_warning() {
     let options = Options { max_texture_size: Some(3), ..options };
     let baked = bake_babylon(inline_scene("odd.png").as_bytes(), &options).unwrap();
     assert_eq!(baked.textures[0].size, (2, 2));
+}
+
+/// Transparent pixels give an alpha plane, emitted and attached to the
+/// texture; baked texels and alpha equal the simulator's loader's, resized
+/// or not.
+#[test]
+fn alpha_is_kept_and_baked_textures_equal_the_simulators() {
+    let dir = scratch("alpha");
+    let pixels: Vec<[u8; 4]> =
+        (0..15).map(|i| [i as u8 * 16, 255 - i as u8 * 16, 100, if i % 4 == 0 { 0 } else { 255 - i as u8 }]).collect();
+    common::write_rgba_png(&dir.join("glass.png"), 3, 5, &pixels);
+    for max in [None, Some(2)] {
+        let options = Options { textures: Some(dir.clone()), max_texture_size: max, ..Options::default() };
+        let baked = bake_babylon(inline_scene("glass.png").as_bytes(), &options).unwrap();
+        let t = &baked.textures[0];
+        let loaded = soft3d::texture::OwnedTexture::load(&dir.join("glass.png"), max.unwrap_or(1 << 15) as usize).unwrap();
+        let Texels::Rgb565(texels) = &t.texels else { panic!("rgb565 expected") };
+        assert_eq!((texels, &t.alpha), (&loaded.texels, &loaded.alpha));
+        assert!(t.alpha.as_ref().is_some_and(|a| a.iter().any(|&a| a < 255)));
+        let source = baked.to_rust();
+        assert!(source.contains("_ALPHA: [u8; "), "{source}");
+        assert!(source.contains(".with_alpha(&"), "{source}");
+    }
 }
 
 #[test]

@@ -12,7 +12,7 @@
 
 mod common;
 
-use common::{asset, inline_scene, write_png, PIXELS, SCENES};
+use common::{asset, inline_scene, write_png, write_rgba_png, PIXELS, SCENES};
 use soft3d::babylon::requirements;
 use soft3d::math::{Vec2, Vec3};
 use soft3d_bake::{bake, bake_babylon, Baked, Options, Quantize, TextureFormat};
@@ -297,6 +297,13 @@ fn generated_source_compiles_and_holds_the_baked_bits() {
         bake_babylon(inline_scene("tiny.png").as_bytes(), &Options { textures: Some(textures.clone()), ..options }).unwrap()
     };
     modules.push(Module { name: "inline".into(), baked: inline(Options::default()), runtime_source: None });
+    // A texture with transparent pixels: its alpha plane must compile into the texture.
+    let glass: Vec<[u8; 4]> = PIXELS.iter().enumerate().map(|(i, &[r, g, b])| [r, g, b, (i * 36) as u8]).collect();
+    write_rgba_png(&textures.join("glass.png"), 4, 2, &glass);
+    let alpha =
+        bake_babylon(inline_scene("glass.png").as_bytes(), &Options { textures: Some(textures.clone()), ..Options::default() }).unwrap();
+    assert!(alpha.textures[0].alpha.is_some());
+    modules.push(Module { name: "alpha".into(), baked: alpha, runtime_source: None });
     modules.push(Module {
         name: "inline_i16".into(),
         baked: inline(Options {

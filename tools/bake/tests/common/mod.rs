@@ -70,6 +70,19 @@ pub const PIXELS: [[u8; 3]; 8] =
 
 /// Writes a PNG of the given pixels (row-major, top row first).
 pub fn write_png(path: &std::path::Path, width: u32, height: u32, pixels: &[[u8; 3]]) {
-    let image = image::RgbImage::from_fn(width, height, |x, y| image::Rgb(pixels[(y * width + x) as usize]));
-    image.save(path).unwrap();
+    let data: Vec<u8> = pixels.iter().flatten().copied().collect();
+    encode(path, width, height, png::ColorType::Rgb, &data);
+}
+
+/// Writes an RGBA PNG of the given pixels (row-major, top row first).
+pub fn write_rgba_png(path: &std::path::Path, width: u32, height: u32, pixels: &[[u8; 4]]) {
+    let data: Vec<u8> = pixels.iter().flatten().copied().collect();
+    encode(path, width, height, png::ColorType::Rgba, &data);
+}
+
+fn encode(path: &std::path::Path, width: u32, height: u32, color: png::ColorType, data: &[u8]) {
+    let mut enc = png::Encoder::new(std::io::BufWriter::new(std::fs::File::create(path).unwrap()), width, height);
+    enc.set_color(color);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.write_header().unwrap().write_image_data(data).unwrap();
 }

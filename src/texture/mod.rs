@@ -1,5 +1,6 @@
-//! Textures: RGB565 texels in flash, sampled nearest or bilinear, wrapped
-//! or clamped, every choice a type so each combination is its own span loop.
+//! Textures: RGB565 texels in flash, optionally with an 8-bit alpha plane,
+//! sampled nearest or bilinear, wrapped or clamped, every choice a type so
+//! each combination is its own span loop.
 //!
 //! Texture coordinates follow Babylon's exported UVs: u to the right, v
 //! down the image as stored (row 0 at v = 0). Effects interpolate them in
@@ -16,7 +17,7 @@ pub enum TextureError {
         /// The height given.
         height: usize,
     },
-    /// The texel slice does not hold `width * height` texels.
+    /// The texel (or alpha) slice does not hold `width * height` values.
     Length {
         /// Texels expected.
         expected: usize,
@@ -40,10 +41,15 @@ impl core::fmt::Display for TextureError {
 impl std::error::Error for TextureError {}
 
 /// A power-of-two RGB565 texture borrowing its texels (row-major, first row
-/// at v = 0). Validated once when built, in `const` context if wanted.
+/// at v = 0), and optionally an alpha plane of one byte per texel (same
+/// order; 0 transparent, 255 opaque). Validated once when built, in
+/// `const` context if wanted. Only materials that blend read the alpha
+/// plane (see [`AlphaBlend`](crate::blend::AlphaBlend)); a texture without
+/// one is opaque.
 #[derive(Clone, Copy, Debug)]
 pub struct Texture<'a> {
     texels: &'a [u16],
+    alpha: &'a [u8],
     width_log2: u32,
     height_log2: u32,
 }
@@ -65,7 +71,21 @@ impl<'a> Texture<'a> {
         if texels.len() != width * height {
             return Err(TextureError::Length { expected: width * height, found: texels.len() });
         }
-        Ok(Self { texels, width_log2, height_log2 })
+        Ok(Self { texels, alpha: &[], width_log2, height_log2 })
+    }
+
+    /// The texture with an alpha plane: one byte per texel, in the order of
+    /// the texels.
+    pub const fn with_alpha(self, alpha: &'a [u8]) -> Result<Self, TextureError> {
+        if alpha.len() != self.texels.len() {
+            return Err(TextureError::Length { expected: self.texels.len(), found: alpha.len() });
+        }
+        Ok(Self { alpha, ..self })
+    }
+
+    /// The alpha plane (empty if the texture is opaque).
+    pub const fn alpha(&self) -> &'a [u8] {
+        self.alpha
     }
 
     /// Width in texels.
@@ -83,22 +103,36 @@ impl<'a> Texture<'a> {
         self.texels
     }
 
-    /// Texel at integer coordinates, wrapped or clamped by `W`.
+    /// Index of the texel at integer coordinates, wrapped or clamped by `W`.
     #[inline(always)]
-    pub fn texel<W: Wrap>(&self, x: i32, y: i32) -> u16 {
+    fn index<W: Wrap>(&self, x: i32, y: i32) -> usize {
         let x = W::apply(x, self.width_log2) as usize;
         let y = W::apply(y, self.height_log2) as usize;
         // Both are within the texture after `apply`; the mask keeps the
         // index provably in bounds without a panic path.
-        let i = (y << self.width_log2 | x) & (self.texels.len() - 1);
-        self.texels.get(i).copied().unwrap_or(0)
+        (y << self.width_log2 | x) & (self.texels.len() - 1)
     }
 
-    /// The texel channels `(r, g, b)` (5, 6 and 5 bits) at a point given
-    /// in texel units with 16 fractional bits.
+    /// Texel at integer coordinates, wrapped or clamped by `W`.
     #[inline(always)]
-    pub fn sample<F: Filter, W: Wrap>(&self, u: i32, v: i32) -> (u32, u32, u32) {
-        F::sample::<W>(self, u, v)
+    pub fn texel<W: Wrap>(&self, x: i32, y: i32) -> u16 {
+        self.texels.get(self.index::<W>(x, y)).copied().unwrap_or(0)
+    }
+
+    /// Texel and alpha (255 without an alpha plane) at integer coordinates.
+    #[inline(always)]
+    fn texel_alpha<W: Wrap>(&self, x: i32, y: i32, alpha: bool) -> (u16, u32) {
+        let i = self.index::<W>(x, y);
+        let a = if alpha { self.alpha.get(i).map_or(255, |&a| a as u32) } else { 255 };
+        (self.texels.get(i).copied().unwrap_or(0), a)
+    }
+
+    /// The texel channels (5, 6 and 5 bits, and alpha 0–255 if `alpha`,
+    /// else 255) at a point given in texel units with 16 fractional bits.
+    /// Inlined, so a constant `alpha` costs nothing when false.
+    #[inline(always)]
+    pub fn sample<F: Filter, W: Wrap>(&self, u: i32, v: i32, alpha: bool) -> Texel {
+        F::sample::<W>(self, u, v, alpha)
     }
 }
 
@@ -137,19 +171,34 @@ impl Wrap for Clamp {
     }
 }
 
+/// A sampled texture color: red and blue in 5 bits, green in 6, alpha in 8.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Texel {
+    /// Red, 0–31.
+    pub r: u32,
+    /// Green, 0–63.
+    pub g: u32,
+    /// Blue, 0–31.
+    pub b: u32,
+    /// Alpha, 0 (transparent) to 255 (opaque).
+    pub a: u32,
+}
+
+impl Texel {
+    #[inline(always)]
+    fn new(t: u16, a: u32) -> Self {
+        let t = t as u32;
+        Self { r: t >> 11, g: (t >> 5) & 0x3F, b: t & 0x1F, a }
+    }
+}
+
 /// How a texel color is made from the texture around a point.
 pub trait Filter: 'static {
     /// Name for reports.
     const NAME: &'static str;
-    /// Channels (5, 6, 5 bits) at `(u, v)` in texel units with 16
-    /// fractional bits.
-    fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32);
-}
-
-#[inline(always)]
-fn channels(t: u16) -> (u32, u32, u32) {
-    let t = t as u32;
-    (t >> 11, (t >> 5) & 0x3F, t & 0x1F)
+    /// The color at `(u, v)` in texel units with 16 fractional bits; the
+    /// alpha plane is read only if `alpha`.
+    fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32, alpha: bool) -> Texel;
 }
 
 /// The texel containing the point.
@@ -158,8 +207,9 @@ pub struct Nearest;
 impl Filter for Nearest {
     const NAME: &'static str = "nearest";
     #[inline(always)]
-    fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32) {
-        channels(texture.texel::<W>(u >> 16, v >> 16))
+    fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32, alpha: bool) -> Texel {
+        let (t, a) = texture.texel_alpha::<W>(u >> 16, v >> 16, alpha);
+        Texel::new(t, a)
     }
 }
 
@@ -170,21 +220,34 @@ pub struct Bilinear;
 impl Filter for Bilinear {
     const NAME: &'static str = "bilinear";
     #[inline(always)]
-    fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32) -> (u32, u32, u32) {
+    fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32, alpha: bool) -> Texel {
         // Texel centers are at half units.
-        let (u, v) = (u.wrapping_sub(1 << 15), v.wrapping_sub(1 << 15));
+        let (u, v) = (u.saturating_sub(1 << 15), v.saturating_sub(1 << 15));
         let (x, y) = (u >> 16, v >> 16);
         let (fx, fy) = (((u >> 8) & 0xFF) as u32, ((v >> 8) & 0xFF) as u32);
         let w = [(256 - fx) * (256 - fy), fx * (256 - fy), (256 - fx) * fy, fx * fy];
-        let t = [texture.texel::<W>(x, y), texture.texel::<W>(x + 1, y), texture.texel::<W>(x, y + 1), texture.texel::<W>(x + 1, y + 1)];
+        let corners = [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)];
         // Weights sum to 2^16; start at one half for rounding.
-        let (mut r, mut g, mut b) = (1u32 << 15, 1u32 << 15, 1u32 << 15);
-        for k in 0..4 {
-            let (tr, tg, tb) = channels(t[k]);
-            r += tr * w[k];
-            g += tg * w[k];
-            b += tb * w[k];
+        let mut sum = Texel { r: 1 << 15, g: 1 << 15, b: 1 << 15, a: 1 << 15 };
+        for (k, &(cx, cy)) in corners.iter().enumerate() {
+            let (t, a) = texture.texel_alpha::<W>(cx, cy, alpha);
+            let t = Texel::new(t, a);
+            sum.r += t.r * w[k];
+            sum.g += t.g * w[k];
+            sum.b += t.b * w[k];
+            if alpha {
+                sum.a += t.a * w[k];
+            }
         }
-        (r >> 16, g >> 16, b >> 16)
+        Texel { r: sum.r >> 16, g: sum.g >> 16, b: sum.b >> 16, a: if alpha { sum.a >> 16 } else { 255 } }
     }
 }
+
+#[cfg(feature = "std")]
+mod convert;
+#[cfg(feature = "std")]
+pub use convert::{resample, rgb565, OwnedTexture};
+#[cfg(feature = "textures")]
+mod load;
+#[cfg(feature = "textures")]
+pub use load::{read_image, read_jpeg, read_png};
