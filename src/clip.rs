@@ -155,10 +155,30 @@ pub fn clip_guard<const V: usize>(poly: &mut Polygon<WindowVertex<V>>, limit: f6
         }
         WindowVertex { x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t, z: a.z + (b.z - a.z) * tf, q, attrs, src: NO_SOURCE }
     };
-    clip_polygon(poly, |v| v.x + limit, lerp);
-    clip_polygon(poly, |v| limit - v.x, lerp);
-    clip_polygon(poly, |v| v.y + limit, lerp);
-    clip_polygon(poly, |v| limit - v.y, lerp);
+    // The crossing lies exactly on the band, and its other coordinate is
+    // interpolated from the endpoint nearer the band: from the far end (say
+    // at 1e300) `a + (b - a)·t` cancels catastrophically, the clipped
+    // polygon folds, and its fan triangles overlap.
+    let on = |bound: f64, along_x: bool| {
+        move |a: &WindowVertex<V>, b: &WindowVertex<V>, t: f64| {
+            let mut v = lerp(a, b, t);
+            let (pa, pb) = if along_x { ((a.x, a.y), (b.x, b.y)) } else { ((a.y, a.x), (b.y, b.x)) };
+            let (near, far) = if (bound - pa.0).abs() <= (bound - pb.0).abs() { (pa, pb) } else { (pb, pa) };
+            let other = near.1 + (far.1 - near.1) * ((bound - near.0) / (far.0 - near.0));
+            // Spans near f64::MAX overflow to inf · 0: keep the near end.
+            let other = if other.is_finite() { other } else { near.1 };
+            if along_x {
+                (v.x, v.y) = (bound, other);
+            } else {
+                (v.x, v.y) = (other, bound);
+            }
+            v
+        }
+    };
+    clip_polygon(poly, |v| v.x + limit, on(-limit, true));
+    clip_polygon(poly, |v| limit - v.x, on(limit, true));
+    clip_polygon(poly, |v| v.y + limit, on(-limit, false));
+    clip_polygon(poly, |v| limit - v.y, on(limit, false));
 }
 
 #[cfg(test)]

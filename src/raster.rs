@@ -214,6 +214,10 @@ struct Plane<S> {
     dy: S,
     lo: S,
     hi: S,
+    /// The `f32` plane `(at_a, dx, dy)` if a gradient does not fit `S`
+    /// (fixed point, on slivers with a large range): then only the careful
+    /// path is used, and it evaluates span ends from this.
+    wide: Option<(f32, f32, f32)>,
 }
 
 impl<S: Interp> Plane<S> {
@@ -224,7 +228,10 @@ impl<S: Interp> Plane<S> {
         let (d1, d2) = (vb - va, vc - va);
         let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
         let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
-        Self { at_a: S::from_f32(va), dx: S::from_f32(dx), dy: S::from_f32(dy), lo: S::from_f32(lo), hi: S::from_f32(hi) }
+        let (gx, gy) = (S::from_f32(dx), S::from_f32(dy));
+        // Rounding moves a gradient by far less than 1; saturation by more.
+        let wide = S::WRAPS && ((gx.to_f32() - dx).abs() > 1.0 || (gy.to_f32() - dy).abs() > 1.0);
+        Self { at_a: S::from_f32(va), dx: gx, dy: gy, lo: S::from_f32(lo), hi: S::from_f32(hi), wide: wide.then_some((va, dx, dy)) }
     }
 
     /// Value at an offset from the top vertex, in units of `2^-f` pixels.
@@ -239,7 +246,7 @@ impl<S: Interp> Plane<S> {
     #[inline(always)]
     fn safe(&self, shape: &Shape, f: u32) -> bool {
         let within = |ox, oy| S::plane_within(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi);
-        within(0, 0) && within(shape.ox1, shape.oy1) && within(shape.ox2, shape.oy2)
+        self.wide.is_none() && within(0, 0) && within(shape.ox1, shape.oy1) && within(shape.ox2, shape.oy2)
     }
 
     /// Start value and step of a span of `len` pixels whose first pixel
@@ -247,11 +254,18 @@ impl<S: Interp> Plane<S> {
     /// values in between interpolated (the careful path).
     #[inline(always)]
     fn clamped_span(&self, ox: i32, oy: i32, len: i32, f: u32) -> (S, S) {
-        let start = S::plane_clamped(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi);
+        let at = |ox: i32| match self.wide {
+            Some((v, dx, dy)) => {
+                let unit = 1.0 / (1u32 << f) as f32;
+                S::from_f32(v + dx * (ox as f32 * unit) + dy * (oy as f32 * unit)).clamp_to(self.lo, self.hi)
+            }
+            None => S::plane_clamped(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi),
+        };
+        let start = at(ox);
         if len < 2 {
             return (start, self.dx);
         }
-        let end = S::plane_clamped(self.at_a, self.dx, self.dy, ox + ((len - 1) << f), oy, f, self.lo, self.hi);
+        let end = at(ox + ((len - 1) << f));
         (start, end.sub(start).div_int(len - 1))
     }
 }
@@ -344,7 +358,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
         Plane::<S>::new(&shape, qa, qb, qc, (1.0 / 65536.0, 1.0))
     } else {
         let (one, zero) = (S::from_f32(1.0), S::default());
-        Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one }
+        Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one, wide: None }
     };
     let n = E::VARYINGS.min(V);
     let mut vary = [z; MAX_VARYINGS];

@@ -102,7 +102,7 @@ pub struct FrameStats {
     pub draw_calls: u32,
     /// Meshes skipped whole: bounding sphere outside the frustum.
     pub meshes_culled: u32,
-    /// Meshes skipped whole: non-finite model matrix.
+    /// Meshes skipped whole: non-finite model or view-projection matrix.
     pub meshes_invalid: u32,
     /// Vertices transformed.
     pub vertices: u32,
@@ -395,7 +395,7 @@ where
         D: DepthMode,
     {
         const { assert!(E::VARYINGS <= V, "the renderer stores fewer varyings (V) than this effect needs") };
-        if !model.is_finite() {
+        if !model.is_finite() || !self.view_proj.is_finite() {
             self.stats.meshes_invalid += 1;
             return Ok(());
         }
@@ -472,8 +472,9 @@ where
     {
         const { assert!(E::VARYINGS <= V, "the renderer stores fewer varyings (V) than this effect needs") };
         let base = self.n_vertices;
-        let snapshot = self.stats;
         self.begin_draw(material, Lighting::UNLIT)?;
+        // After `begin_draw`, as in `draw`: `rollback` undoes its count.
+        let snapshot = self.stats;
         let lights = Lighting::UNLIT;
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {

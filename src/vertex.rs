@@ -16,7 +16,7 @@ pub const BEHIND_NEAR: i32 = 1;
 pub const BEYOND_FAR: i32 = 2;
 /// Vertex outside the guard band of the fixed-point setup.
 pub const OUTSIDE_GUARD: i32 = 4;
-/// Vertex with a non-finite position.
+/// Vertex with a non-finite position or varying.
 pub const NOT_FINITE: i32 = 8;
 /// `x` of a vertex that has no window position; its `y` holds the flags
 /// above. (Keeps the flags without growing every stored vertex.)
@@ -78,7 +78,11 @@ impl<E: Effect> VertexStage<'_, E> {
         let (position, normal) = if !E::LIT_VERTICES {
             (Vec3::ZERO, Vec3::ZERO)
         } else if self.model_space {
-            (mesh.positions()[i], mesh.normals()[i])
+            // Unit normals are used as they are (no square root); others
+            // (including zero and NaN) are normalized like the world path.
+            let n = mesh.normals()[i];
+            let n = if (n.length_squared() - 1.0).abs() <= 1e-4 { n } else { n.normalize_or_zero() };
+            (mesh.positions()[i], n)
         } else {
             let n = self.normal_matrix.transform(mesh.normals()[i]).normalize_or_zero();
             (self.model.transform_point3(mesh.positions()[i]), n)
@@ -108,7 +112,9 @@ impl<E: Effect> VertexStage<'_, E> {
 pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
     let c = v.pos;
     let mut flags = 0;
-    if !c.is_finite() {
+    // A non-finite varying (a NaN texture coordinate) would be drawn as
+    // garbage: the vertex is invalid like a non-finite position.
+    if !c.is_finite() || !v.attrs.iter().all(|a| a.is_finite()) {
         flags |= NOT_FINITE;
     } else {
         if c.z < 0.0 {

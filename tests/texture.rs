@@ -1,8 +1,9 @@
 //! Texture mapping (bounds: at most 0.5% of pixels differ from the ray
-//! cast with exact perspective, 1% with 16-pixel spans): exact texels on a screen-aligned quad, wrapping of
-//! negative and huge coordinates, clamping, bilinear filtering at the
-//! border, and affine versus perspective-correct mapping of a checkerboard
-//! seen at a grazing angle against an independent `f64` ray-cast reference.
+//! cast with exact perspective, 1% with 16-pixel spans): exact texels on a
+//! screen-aligned quad, and affine versus perspective-correct mapping of a
+//! checkerboard seen at a grazing angle against an independent `f64`
+//! ray-cast reference. Wrapping, clamping, odd sizes and bilinear borders
+//! are hard cases: tests/hard_cases/texture.rs.
 
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use soft3d::effect::Textured;
@@ -10,7 +11,7 @@ use soft3d::host::Image;
 use soft3d::material::{Affine, PerPixel, PerSpan, Perspective};
 use soft3d::math::{Mat4, Vec2, Vec3};
 use soft3d::mesh::Mesh;
-use soft3d::texture::{Bilinear, Clamp, Filter, Nearest, Repeat, Texture, Wrap};
+use soft3d::texture::{Filter, Nearest, Repeat, Texture, Wrap};
 use soft3d::{Camera, Cull, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, Settings};
 
 const WHITE: u16 = 0xFFFF;
@@ -74,83 +75,6 @@ fn nearest_texels_land_exactly_on_their_pixels() {
             }
         }
     });
-}
-
-#[test]
-fn negative_and_large_coordinates_repeat_like_zero_to_one() {
-    let texels = distinct();
-    let tex = Texture::new(&texels, 4, 4).unwrap();
-    let reference = render_flat::<FixedPoint, Nearest, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 32);
-    for (u0, v0) in [(-3.0, -7.0), (-1.0, 2.0), (5.0, 1.0), (1.0e6, -1.0e6), (4096.0, 65536.0)] {
-        for float in [false, true] {
-            let img = if float {
-                render_flat::<FloatingPoint, Nearest, Repeat>(tex, (u0, v0), (u0 + 1.0, v0 + 1.0), 32)
-            } else {
-                render_flat::<FixedPoint, Nearest, Repeat>(tex, (u0, v0), (u0 + 1.0, v0 + 1.0), 32)
-            };
-            assert_eq!(img.pixels, reference.pixels, "uv from ({u0}, {v0}), float {float}");
-        }
-    }
-}
-
-#[test]
-fn clamp_repeats_the_edge_texels() {
-    let texels = distinct();
-    let tex = Texture::new(&texels, 4, 4).unwrap();
-    // u and v from -1 to 2: the middle third shows the texture, the rest
-    // its edge texels.
-    let img = render_flat::<FixedPoint, Nearest, Clamp>(tex, (-1.0, -1.0), (2.0, 2.0), 48);
-    for y in 0..48usize {
-        for x in 0..48usize {
-            // 48 px over 3 texture widths: 4 px per texel, texel index from -4.
-            let tx = (x as i32 / 4 - 4).clamp(0, 3) as usize;
-            let ty = (y as i32 / 4 - 4).clamp(0, 3) as usize;
-            assert_eq!(raw(img.get(x as u32, y as u32)), texels[ty * 4 + tx], "pixel {x},{y}");
-        }
-    }
-}
-
-#[test]
-fn non_square_and_one_texel_textures() {
-    let one = [0xF800u16];
-    let tex = Texture::new(&one, 1, 1).unwrap();
-    let img = render_flat::<FixedPoint, Bilinear, Repeat>(tex, (-2.5, 0.3), (7.0, 1e4), 16);
-    assert!(img.pixels.iter().all(|&c| raw(c) == 0xF800));
-    let wide: Vec<u16> = (0..8).map(|i| if i < 4 { WHITE } else { BLACK }).collect();
-    let tex = Texture::new(&wide, 8, 1).unwrap();
-    let img = render_flat::<FixedPoint, Nearest, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 16);
-    for x in 0..16 {
-        assert_eq!(raw(img.get(x, 9)), if x < 8 { WHITE } else { BLACK });
-    }
-    assert_eq!(Texture::new(&wide, 6, 1).unwrap_err(), soft3d::texture::TextureError::Size { width: 6, height: 1 });
-    assert_eq!(Texture::new(&wide, 4, 1).unwrap_err(), soft3d::texture::TextureError::Length { expected: 4, found: 8 });
-}
-
-#[test]
-fn bilinear_blends_across_the_border_when_repeating_and_not_when_clamping() {
-    // Two texels: white on the left, black on the right.
-    let texels = [WHITE, BLACK];
-    let tex = Texture::new(&texels, 2, 1).unwrap();
-    // u from 0 to 1 over 64 px: pixel 0's center is at u = 1/128, a quarter
-    // texel left of the white texel's center.
-    let repeat = render_flat::<FixedPoint, Bilinear, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 64);
-    let clamp = render_flat::<FixedPoint, Bilinear, Clamp>(tex, (0.0, 0.0), (1.0, 1.0), 64);
-    let red = |c: Rgb565| c.r() as i32;
-    // Clamped: the left edge stays white, the middle blends, the right edge stays black.
-    assert_eq!(red(clamp.get(0, 5)), 31);
-    assert_eq!(red(clamp.get(63, 5)), 0);
-    assert!((red(clamp.get(32, 5)) - 16).abs() <= 1, "{}", red(clamp.get(32, 5)));
-    // Repeating: at the left edge the black texel wraps in from the right
-    // (pixel 0's center is 31.5/32 of the way from the black texel's center
-    // back to the white one's: white weight 0.5 + 1/64).
-    let left = red(repeat.get(0, 5));
-    assert!((left - 16).abs() <= 1, "{left}");
-    let right = red(repeat.get(63, 5));
-    assert!((right - 15).abs() <= 1, "{right}");
-    // Away from the borders both agree.
-    for x in 17..47 {
-        assert_eq!(repeat.get(x, 5), clamp.get(x, 5), "x {x}");
-    }
 }
 
 /// A checkerboard floor seen at a grazing angle: pixels whose color

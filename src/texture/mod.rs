@@ -221,7 +221,8 @@ impl Filter for Bilinear {
     const NAME: &'static str = "bilinear";
     #[inline(always)]
     fn sample<W: Wrap>(texture: &Texture<'_>, u: i32, v: i32, alpha: bool) -> Texel {
-        // Texel centers are at half units.
+        // Texel centers are at half units. Saturating: a coordinate already
+        // clamped to i32::MIN must not wrap to the opposite edge.
         let (u, v) = (u.saturating_sub(1 << 15), v.saturating_sub(1 << 15));
         let (x, y) = (u >> 16, v >> 16);
         let (fx, fy) = (((u >> 8) & 0xFF) as u32, ((v >> 8) & 0xFF) as u32);

@@ -7,8 +7,9 @@ use soft3d::effect::FragmentCount;
 use soft3d::host::Image;
 use soft3d::material::DepthOff;
 use soft3d::math::{Fixed, Mat4};
+use soft3d::mesh::Mesh;
 use soft3d::tri::TriVertex;
-use soft3d::{Cull, HostRenderer, Lights, Material, Precision, Settings};
+use soft3d::{Cull, FrameStats, HostRenderer, Lights, Material, Precision, Settings};
 
 /// Snaps a coordinate to the 1/2^bits grid, in units of 1/2^bits pixel,
 /// rounding half up (the documented convention).
@@ -31,8 +32,16 @@ pub fn oracle(tri: &[(f64, f64); 3], width: usize, height: usize, bits: u32) -> 
         p.swap(1, 2);
     }
     let half = 1i128 << bits;
-    for y in 0..height {
-        for x in 0..width {
+    // Only the bounding box can be covered (pixel n's center is at
+    // (2n + 1) * 2^bits in these units); this keeps sums over many
+    // triangles fast.
+    let pixel = |v: i128| (v >> (bits + 1)).clamp(-1, 1 << 40);
+    let (lo_x, hi_x) = (p.iter().map(|v| v.0).min().unwrap(), p.iter().map(|v| v.0).max().unwrap());
+    let (lo_y, hi_y) = (p.iter().map(|v| v.1).min().unwrap(), p.iter().map(|v| v.1).max().unwrap());
+    let xs = pixel(lo_x).max(0) as usize..(pixel(hi_x) + 1).clamp(0, width as i128) as usize;
+    let ys = pixel(lo_y).max(0) as usize..(pixel(hi_y) + 1).clamp(0, height as i128) as usize;
+    for y in ys {
+        for x in xs.clone() {
             let (cx, cy) = (((x as i128) << (bits + 1)) + half, ((y as i128) << (bits + 1)) + half);
             let inside = (0..3).all(|i| {
                 let (a, b) = (p[i], p[(i + 1) % 3]);
@@ -58,14 +67,104 @@ pub fn tv(x: f64, y: f64) -> TriVertex {
 
 /// Fragment counts (before any depth test) of `tris` drawn in one frame.
 pub fn coverage_with<S: Settings>(tris: &[[TriVertex; 3]], width: usize, height: usize, strip: usize, cull: Cull) -> Vec<u8> {
+    coverage_stats_with::<S>(tris, width, height, strip, cull).0
+}
+
+/// [`coverage_with`] and the frame's statistics.
+pub fn coverage_stats_with<S: Settings>(
+    tris: &[[TriVertex; 3]],
+    width: usize,
+    height: usize,
+    strip: usize,
+    cull: Cull,
+) -> (Vec<u8>, FrameStats) {
     let verts = tris.len() * 9 + 3;
     let mut r: HostRenderer<Rgb888, 3, S> = HostRenderer::new(width, height, strip, verts, tris.len() * 7 + 1, Rgb888::BLACK).unwrap();
     let material = Material::new(FragmentCount).with_cull(cull).with_depth::<DepthOff>();
     let mut frame = r.begin_frame_with(Mat4::IDENTITY, &Lights::UNLIT, Rgb888::BLACK);
     frame.draw_window_triangles(tris.iter().copied(), &material).unwrap();
     let mut img = Image::new(width as u32, height as u32, Rgb888::BLACK);
-    let Ok(_) = frame.finish(&mut img);
-    img.pixels.iter().map(|c| c.r()).collect()
+    let Ok(stats) = frame.finish(&mut img);
+    (img.pixels.iter().map(|c| c.r()).collect(), stats)
+}
+
+/// [`coverage_stats_with`] for a run-time sub-pixel setting and scalar
+/// (no culling).
+pub fn coverage_stats_mode(
+    tris: &[[TriVertex; 3]],
+    width: usize,
+    height: usize,
+    strip: usize,
+    bits: u32,
+    float: bool,
+) -> (Vec<u8>, FrameStats) {
+    struct Go<'a>(&'a [[TriVertex; 3]], usize, usize, usize);
+    impl ModeFn for Go<'_> {
+        type Out = (Vec<u8>, FrameStats);
+        fn run<S: Settings>(self) -> Self::Out {
+            coverage_stats_with::<S>(self.0, self.1, self.2, self.3, Cull::None)
+        }
+    }
+    with_mode(bits, float, Go(tris, width, height, strip))
+}
+
+/// Work generic over the renderer's [`Settings`], run for a mode chosen at
+/// run time by [`with_mode`].
+pub trait ModeFn {
+    /// What the work returns.
+    type Out;
+    /// Runs it with settings `S`.
+    fn run<S: Settings>(self) -> Self::Out;
+}
+
+/// Runs `f` with `Precision<Fixed or f32, bits>` (bits 0 to 8).
+pub fn with_mode<F: ModeFn>(bits: u32, float: bool, f: F) -> F::Out {
+    macro_rules! go {
+        ($($b:literal)*) => {
+            match (bits, float) {
+                $(($b, false) => f.run::<Precision<Fixed, $b>>(),
+                  ($b, true) => f.run::<Precision<f32, $b>>(),)*
+                _ => panic!("bits {bits}"),
+            }
+        };
+    }
+    go!(0 1 2 3 4 5 6 7 8)
+}
+
+/// The numeric modes every hard case runs in: sub-pixel bits 0, 2, 4, 6, 8,
+/// each with fixed-point and `f32` interpolation.
+pub const MODES: [(u32, bool); 10] =
+    [(0, false), (0, true), (2, false), (2, true), (4, false), (4, true), (6, false), (6, true), (8, false), (8, true)];
+
+/// A mode for messages: "fixed/4", "f32/8".
+pub fn mode_name(bits: u32, float: bool) -> String {
+    format!("{}/{bits}", if float { "f32" } else { "fixed" })
+}
+
+/// One sub-pixel at `bits`, in pixels.
+pub fn unit(bits: u32) -> f64 {
+    1.0 / (1u64 << bits) as f64
+}
+
+/// A white window-space triangle from three points.
+pub fn tri(p: &[(f64, f64); 3]) -> [TriVertex; 3] {
+    [tv(p[0].0, p[0].1), tv(p[1].0, p[1].1), tv(p[2].0, p[2].1)]
+}
+
+/// The corners of a window-space triangle.
+pub fn points(t: &[TriVertex; 3]) -> [(f64, f64); 3] {
+    [(t[0].x, t[0].y), (t[1].x, t[1].y), (t[2].x, t[2].y)]
+}
+
+/// The oracle's coverage of several triangles, summed per pixel.
+pub fn oracle_sum(tris: &[[TriVertex; 3]], width: usize, height: usize, bits: u32) -> Vec<u8> {
+    let mut sum = vec![0u8; width * height];
+    for t in tris {
+        for (s, o) in sum.iter_mut().zip(oracle(&points(t), width, height, bits)) {
+            *s += o;
+        }
+    }
+    sum
 }
 
 /// [`coverage_with`] for a run-time sub-pixel setting (fixed point).
@@ -75,16 +174,42 @@ pub fn coverage(tris: &[[TriVertex; 3]], width: usize, height: usize, strip: usi
 
 /// [`coverage_with`] for a run-time sub-pixel setting and scalar.
 pub fn coverage_mode(tris: &[[TriVertex; 3]], width: usize, height: usize, strip: usize, bits: u32, float: bool) -> Vec<u8> {
-    macro_rules! go {
-        ($($b:literal)*) => {
-            match (bits, float) {
-                $(($b, false) => coverage_with::<Precision<Fixed, $b>>(tris, width, height, strip, Cull::None),
-                  ($b, true) => coverage_with::<Precision<f32, $b>>(tris, width, height, strip, Cull::None),)*
-                _ => panic!("bits"),
-            }
-        };
+    coverage_stats_mode(tris, width, height, strip, bits, float).0
+}
+
+/// Fragment counts and statistics of `mesh` drawn with the clip-space
+/// matrix `view_proj` (model = identity) in a `width` × `height` frame of
+/// 16-row strips.
+pub fn mesh_coverage_with<S: Settings>(mesh: &Mesh<'_>, view_proj: Mat4, cull: Cull, width: usize, height: usize) -> (Vec<u8>, FrameStats) {
+    let tris = mesh.triangle_count();
+    let mut r: HostRenderer<Rgb888, 3, S> =
+        HostRenderer::new(width, height, 16, mesh.vertex_count() + tris * 8, tris * 8 + 1, Rgb888::BLACK).unwrap();
+    let material = Material::new(FragmentCount).with_cull(cull).with_depth::<DepthOff>();
+    let mut frame = r.begin_frame_with(view_proj, &Lights::UNLIT, Rgb888::BLACK);
+    frame.draw(mesh, &Mat4::IDENTITY, &material).unwrap();
+    let mut img = Image::new(width as u32, height as u32, Rgb888::BLACK);
+    let Ok(stats) = frame.finish(&mut img);
+    (img.pixels.iter().map(|c| c.r()).collect(), stats)
+}
+
+/// [`mesh_coverage_with`] for a run-time sub-pixel setting and scalar.
+pub fn mesh_coverage_mode(
+    mesh: &Mesh<'_>,
+    view_proj: Mat4,
+    cull: Cull,
+    width: usize,
+    height: usize,
+    bits: u32,
+    float: bool,
+) -> (Vec<u8>, FrameStats) {
+    struct Go<'a, 'b>(&'a Mesh<'b>, Mat4, Cull, usize, usize);
+    impl ModeFn for Go<'_, '_> {
+        type Out = (Vec<u8>, FrameStats);
+        fn run<S: Settings>(self) -> Self::Out {
+            mesh_coverage_with::<S>(self.0, self.1, self.2, self.3, self.4)
+        }
     }
-    go!(0 1 2 3 4 5 6 7 8)
+    with_mode(bits, float, Go(mesh, view_proj, cull, width, height))
 }
 
 /// A small deterministic PRNG (xorshift64*), so tests need no seed files.

@@ -8,14 +8,14 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-mod degenerate;
-mod slivers;
-mod shared_edges;
-mod huge;
-mod camera_plane;
-mod subpixel_motion;
-mod depth;
-mod lighting;
-mod texture;
 mod bad_numbers;
+mod camera_plane;
 mod capacity;
+mod degenerate;
+mod depth;
+mod huge;
+mod lighting;
+mod shared_edges;
+mod slivers;
+mod subpixel_motion;
+mod texture;
