@@ -431,13 +431,13 @@ where
         }
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
-        let (p, idx) = (mesh.positions(), mesh.indices());
+        let (p, idx) = (|i: usize| mesh.position(i), mesh.indices());
         for t in idx.chunks_exact(3) {
             let local = [t[0] as usize, t[1] as usize, t[2] as usize];
             let corners = [(base + local[0]) as u16, (base + local[1]) as u16, (base + local[2]) as u16];
             let face = if E::USES_FACE {
                 // Geometric normal in model space, to world by the normal matrix.
-                let (a, b, c) = (p[local[0]], p[local[1]], p[local[2]]);
+                let (a, b, c) = (p(local[0]), p(local[1]), p(local[2]));
                 let normal = stage.normal_matrix.transform((b - a).cross(c - a)).normalize_or_zero();
                 let position = model.transform_point3((a + b + c) * (1.0 / 3.0));
                 let color = mesh.colors().map_or(material.color, |cs| cs[local[0]]);
@@ -447,7 +447,7 @@ where
             };
             let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
                 let i = local[vi];
-                ClipVertex { pos: stage.clip_position(p[i]), attrs: stage.varyings::<C, V>(mesh, i), src: corners[vi] }
+                ClipVertex { pos: stage.clip_position(p(i)), attrs: stage.varyings::<C, V>(mesh, i), src: corners[vi] }
             });
             if let Err(e) = res {
                 self.rollback(base, snapshot);

@@ -80,12 +80,12 @@ impl<E: Effect> VertexStage<'_, E> {
         } else if self.model_space {
             // Unit normals are used as they are (no square root); others
             // (including zero and NaN) are normalized like the world path.
-            let n = mesh.normals()[i];
+            let n = mesh.normal(i);
             let n = if (n.length_squared() - 1.0).abs() <= 1e-4 { n } else { n.normalize_or_zero() };
-            (mesh.positions()[i], n)
+            (mesh.position(i), n)
         } else {
-            let n = self.normal_matrix.transform(mesh.normals()[i]).normalize_or_zero();
-            (self.model.transform_point3(mesh.positions()[i]), n)
+            let n = self.normal_matrix.transform(mesh.normal(i)).normalize_or_zero();
+            (self.model.transform_point3(mesh.position(i)), n)
         };
         let input = VertexInput {
             position,
@@ -101,7 +101,7 @@ impl<E: Effect> VertexStage<'_, E> {
     /// otherwise flagged.
     #[inline]
     pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        let clip = self.clip_position(mesh.positions()[i]);
+        let clip = self.clip_position(mesh.position(i));
         let attrs = self.varyings::<C, V>(mesh, i);
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }

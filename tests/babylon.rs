@@ -76,8 +76,8 @@ fn monkey_loads_with_its_material_camera_and_light() {
     let mesh = scene.mesh(0).unwrap();
     assert_eq!((mesh.vertex_count(), mesh.triangle_count()), (886, 966));
     // First vertex: position, normal (normalized), uv, as interleaved in the file.
-    assert_eq!(mesh.positions()[0], Vec3::new(-0.4688, 0.3517, -0.7136));
-    assert_close(mesh.normals()[0], Vec3::new(-0.6826, 0.1047, -0.7232).normalize_or_zero(), 1e-6);
+    assert_eq!(mesh.position(0), Vec3::new(-0.4688, 0.3517, -0.7136));
+    assert_close(mesh.normal(0), Vec3::new(-0.6826, 0.1047, -0.7232).normalize_or_zero(), 1e-6);
     assert_eq!(mesh.uvs().unwrap()[0], Vec2::new(0.4891, 0.8913));
     // The file's triangles are [0, 1, 2], [2, 3, 0], rewound for soft3d.
     assert_eq!(&mesh.indices()[..6], &[0, 2, 1, 2, 0, 3]);
@@ -153,8 +153,8 @@ fn cube_loads_in_the_newer_layout() {
     assert_eq!((info.vertex_count(), info.index_count()), (8, 36));
     let mesh = scene.mesh(0).unwrap();
     assert_eq!(mesh.triangle_count(), 12);
-    assert_eq!(mesh.positions()[1], Vec3::new(-1.0, -1.0, 1.0));
-    assert_close(mesh.normals()[1], Vec3::new(-1.0, -1.0, 1.0).normalize_or_zero(), 1e-6);
+    assert_eq!(mesh.position(1), Vec3::new(-1.0, -1.0, 1.0));
+    assert_close(mesh.normal(1), Vec3::new(-1.0, -1.0, 1.0).normalize_or_zero(), 1e-6);
 
     let m = scene.mesh_material(0).unwrap();
     assert_eq!((m.name.as_str(), m.id.as_str()), ("box.Material", "box.Material"));
@@ -299,12 +299,12 @@ fn legacy_and_separate_layouts_give_identical_meshes() {
     let mesh = scene.mesh(0).unwrap();
     // Stride 10: the first uv set is kept, the second (all 9s) dropped.
     assert_eq!(mesh.uvs().unwrap()[3], Vec2::new(0.25, 0.75));
-    assert_eq!(mesh.positions()[2], Vec3::new(1.0, 1.0, 0.5));
+    assert_eq!(mesh.position(2), Vec3::new(1.0, 1.0, 0.5));
     // Normalized on load; a zero normal stays zero.
-    assert_eq!(mesh.normals()[0], Vec3::new(0.0, 0.0, -1.0));
-    assert_close(mesh.normals()[1], Vec3::new(0.0, 0.70710677, -0.70710677), 1e-7);
-    assert_eq!(mesh.normals()[2], Vec3::ZERO);
-    assert_eq!(mesh.normals()[3], Vec3::new(0.6, 0.0, -0.8));
+    assert_eq!(mesh.normal(0), Vec3::new(0.0, 0.0, -1.0));
+    assert_close(mesh.normal(1), Vec3::new(0.0, 0.70710677, -0.70710677), 1e-7);
+    assert_eq!(mesh.normal(2), Vec3::ZERO);
+    assert_eq!(mesh.normal(3), Vec3::new(0.6, 0.0, -0.8));
     // `uvCount` absent means 0 (stride 6).
     let no_count = legacy(0);
     assert!(!no_count.contains("uvCount") && small(&no_count).unwrap().mesh(0).unwrap().uvs().is_none());
@@ -314,7 +314,7 @@ fn legacy_and_separate_layouts_give_identical_meshes() {
 fn missing_normals_are_computed_from_the_triangles() {
     let json = r#"{"meshes":[{"positions":[0,0,0, 1,0,0, 0,1,0, 5,5,5],"indices":[0,2,1]}]}"#;
     let scene = small(json).unwrap();
-    let n = scene.mesh(0).unwrap().normals();
+    let n = scene.mesh(0).unwrap().normals().as_f32().unwrap();
     // In the file (b - a) × (c - a) for a = 0, b = (0,1,0), c = (1,0,0) is
     // -z, and Babylon's front side is the opposite one (its
     // ComputeNormals gives +z); vertex 3 is in no triangle.
@@ -338,7 +338,7 @@ fn several_meshes_share_the_pools() {
     assert_eq!(names.len(), 3);
     assert_eq!((names[1].1, names[1].2, names[2].1), (4, false, 3));
     let c = scene.mesh(2).unwrap();
-    assert_eq!(c.positions()[0], Vec3::new(0.0, 0.0, 3.0));
+    assert_eq!(c.position(0), Vec3::new(0.0, 0.0, 3.0));
     assert_eq!(c.uvs().unwrap()[0], Vec2::new(0.5, 0.5));
     // Rewound: the last two corners of every triangle swapped.
     assert_eq!(c.indices(), &[2, 0, 1]);
@@ -368,7 +368,7 @@ fn rotated_cube_vertices_land_where_babylon_puts_them() {
     let scene = small(json).unwrap();
     let item = scene.iter().next().unwrap();
     let (r, s, t) = (Vec3::new(0.3, -1.1, 0.7), Vec3::new(2.0, 1.0, 0.5), Vec3::new(1.0, 2.0, 3.0));
-    for &p in item.mesh.positions() {
+    for p in item.mesh.positions().iter() {
         let expected = babylon_rotate(r, p.mul_elem(s)) + t;
         assert_close(item.model.transform_point3(p), expected, 1e-5);
     }
@@ -847,7 +847,7 @@ fn hand_written_scenes_load() {
     assert_eq!(requirements(&json).unwrap(), Requirements { meshes: 2, materials: 0, lights: 0, vertices: 7, uvs: 3, indices: 9 });
     let scene = host(&json);
     assert_eq!(scene.mesh(0).unwrap().uvs().unwrap(), &[Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0)]);
-    assert_eq!(scene.mesh(1).unwrap().normals(), &[Vec3::new(0.0, 0.0, 1.0); 4]);
+    assert_eq!(scene.mesh(1).unwrap().normals().as_f32(), Some(&[Vec3::new(0.0, 0.0, 1.0); 4][..]));
     assert_eq!(scene.camera().unwrap().name.as_str(), "Second");
     assert_eq!((scene.skipped_lights(), scene.to_lights().point, scene.to_lights().directional), (1, None, None));
 }
@@ -861,7 +861,7 @@ fn loaded_triangles_face_the_way_their_normals_point() {
         let Some(json) = asset(name) else { continue };
         let scene = host(&json);
         let mesh = scene.mesh(0).unwrap();
-        let (p, n) = (mesh.positions(), mesh.normals());
+        let (p, n) = (mesh.positions().as_f32().unwrap(), mesh.normals().as_f32().unwrap());
         let (mut agree, mut total) = (0, 0);
         for t in mesh.indices().chunks_exact(3) {
             let [a, b, c] = [t[0], t[1], t[2]].map(usize::from);

@@ -19,7 +19,7 @@ pub fn run(data: &[u8]) {
                 assert_eq!(mesh.vertex_count(), info.vertex_count());
                 assert!(mesh.positions().iter().all(|p| p.is_finite()));
                 // Normalized on load, or zero.
-                assert!(mesh.normals().iter().all(|n| *n == soft3d::math::Vec3::ZERO || (n.length() - 1.0).abs() < 1e-4));
+                assert!(mesh.normals().iter().all(|n| n == soft3d::math::Vec3::ZERO || (n.length() - 1.0).abs() < 1e-4));
                 let _ = info.model_matrix();
             }
             assert_eq!(scene.iter().count(), scene.meshes().len());

@@ -187,8 +187,8 @@ impl HostScene {
             .iter()
             .map(|s| OwnedMesh {
                 name: s.info.name.to_string(),
-                positions: s.mesh.positions().to_vec(),
-                normals: s.mesh.normals().to_vec(),
+                positions: (0..s.mesh.vertex_count()).map(|i| s.mesh.position(i)).collect(),
+                normals: (0..s.mesh.vertex_count()).map(|i| s.mesh.normal(i)).collect(),
                 uvs: s.mesh.uvs().map(<[Vec2]>::to_vec),
                 indices: s.mesh.indices().to_vec(),
                 model: s.model,

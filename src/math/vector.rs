@@ -53,6 +53,11 @@ impl Vec3 {
         Self { x, y, z }
     }
 
+    /// The components `[x, y, z]`.
+    pub const fn to_array(self) -> [f32; 3] {
+        [self.x, self.y, self.z]
+    }
+
     /// Dot product.
     #[inline]
     pub fn dot(self, o: Self) -> f32 {

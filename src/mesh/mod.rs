@@ -4,12 +4,24 @@
 //! flash; it is validated once when built (in a `const` context, a bad mesh
 //! is a compile error) and carries its bounding sphere.
 //!
+//! Positions and normals are stored as `f32` triples, or quantized to `i16`
+//! steps ([`Vectors::I16`], half the flash): each vertex is dequantized as
+//! `q as f32 * scale + offset` when the vertex stage reads it, the same
+//! `f32` arithmetic on every target, so an `i16` mesh renders exactly like
+//! the `f32` mesh of its dequantized values. With the `std` feature,
+//! [`QuantizedMesh`] quantizes a mesh at run time as the bake tool does.
+//!
 //! Winding: a triangle `(a, b, c)` faces the side its normal
 //! `(b - a) × (c - a)` points to. Seen from that side in the left-handed
 //! frame it is clockwise on screen. (Babylon's files wind the other way;
 //! the [`babylon`](crate::babylon) loader rewinds them.)
 
+#[cfg(feature = "std")]
+mod quantize;
 mod shapes;
+
+#[cfg(feature = "std")]
+pub use quantize::{QuantizeError, QuantizedMesh};
 
 pub use shapes::{
     cube_index_count, cube_vertex_count, sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, MeshData,
@@ -69,11 +81,80 @@ pub struct Sphere {
     pub radius: f32,
 }
 
+/// Model units per step of a quantized normal component (1/32767).
+pub const NORMAL_SCALE: f32 = 1.0 / 32767.0;
+
+/// Per-vertex 3-vectors (positions or normals), as `f32` or as `i16` steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Vectors<'a> {
+    /// `f32` triples.
+    F32(&'a [Vec3]),
+    /// `i16` steps, component `k` meaning `q[k] as f32 * scale[k] + offset[k]`.
+    I16 {
+        /// The steps.
+        steps: &'a [[i16; 3]],
+        /// Model units per step, per axis.
+        scale: [f32; 3],
+        /// The value of step 0, per axis.
+        offset: [f32; 3],
+    },
+}
+
+impl<'a> Vectors<'a> {
+    /// Number of vectors.
+    pub const fn len(&self) -> usize {
+        match self {
+            Vectors::F32(v) => v.len(),
+            Vectors::I16 { steps, .. } => steps.len(),
+        }
+    }
+
+    /// Whether there are none.
+    pub const fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Vector `i` (zero past the end), dequantized if stored as `i16`.
+    #[inline]
+    pub const fn get(&self, i: usize) -> Vec3 {
+        match self {
+            Vectors::F32(v) => {
+                if i < v.len() {
+                    v[i]
+                } else {
+                    Vec3::ZERO
+                }
+            }
+            Vectors::I16 { steps, scale, offset } => {
+                if i < steps.len() {
+                    let q = steps[i];
+                    Vec3::new(q[0] as f32 * scale[0] + offset[0], q[1] as f32 * scale[1] + offset[1], q[2] as f32 * scale[2] + offset[2])
+                } else {
+                    Vec3::ZERO
+                }
+            }
+        }
+    }
+
+    /// The vectors in order, dequantized if stored as `i16`.
+    pub fn iter(&self) -> impl Iterator<Item = Vec3> + '_ {
+        (0..self.len()).map(|i| self.get(i))
+    }
+
+    /// The `f32` slice, if stored as `f32`.
+    pub const fn as_f32(&self) -> Option<&'a [Vec3]> {
+        match *self {
+            Vectors::F32(v) => Some(v),
+            Vectors::I16 { .. } => None,
+        }
+    }
+}
+
 /// An indexed triangle mesh borrowing its arrays.
 #[derive(Clone, Copy, Debug)]
 pub struct Mesh<'a> {
-    positions: &'a [Vec3],
-    normals: &'a [Vec3],
+    positions: Vectors<'a>,
+    normals: Vectors<'a>,
     uvs: Option<&'a [Vec2]>,
     colors: Option<&'a [Rgb888]>,
     indices: &'a [u16],
@@ -84,6 +165,30 @@ impl<'a> Mesh<'a> {
     /// Builds and validates a mesh: one normal per position, indices in
     /// range and a multiple of three. Usable in `const` items.
     pub const fn new(positions: &'a [Vec3], normals: &'a [Vec3], indices: &'a [u16]) -> Result<Self, MeshError> {
+        Self::from_vectors(Vectors::F32(positions), Vectors::F32(normals), indices)
+    }
+
+    /// A mesh of `i16` positions (component `k` is `q[k] as f32 *
+    /// position_scale[k] + position_offset[k]`) and `i16` normals (steps of
+    /// [`NORMAL_SCALE`]), validated like [`Mesh::new`]. Usable in `const`
+    /// items; the bake tool's `--quantize i16` emits these.
+    pub const fn new_i16(
+        positions: &'a [[i16; 3]],
+        position_scale: [f32; 3],
+        position_offset: [f32; 3],
+        normals: &'a [[i16; 3]],
+        indices: &'a [u16],
+    ) -> Result<Self, MeshError> {
+        Self::from_vectors(
+            Vectors::I16 { steps: positions, scale: position_scale, offset: position_offset },
+            Vectors::I16 { steps: normals, scale: [NORMAL_SCALE; 3], offset: [0.0; 3] },
+            indices,
+        )
+    }
+
+    /// Builds and validates a mesh from positions and normals in either
+    /// storage.
+    pub const fn from_vectors(positions: Vectors<'a>, normals: Vectors<'a>, indices: &'a [u16]) -> Result<Self, MeshError> {
         if positions.len() > 1 << 16 {
             return Err(MeshError::TooManyVertices(positions.len()));
         }
@@ -100,7 +205,8 @@ impl<'a> Mesh<'a> {
             }
             i += 1;
         }
-        Ok(Self { positions, normals, uvs: None, colors: None, indices, bounds: bounding_sphere(positions) })
+        let bounds = bounding_sphere(&positions);
+        Ok(Self { positions, normals, uvs: None, colors: None, indices, bounds })
     }
 
     /// Adds texture coordinates, one per position.
@@ -122,12 +228,22 @@ impl<'a> Mesh<'a> {
     }
 
     /// Vertex positions.
-    pub const fn positions(&self) -> &'a [Vec3] {
+    pub const fn positions(&self) -> Vectors<'a> {
         self.positions
     }
     /// Vertex normals.
-    pub const fn normals(&self) -> &'a [Vec3] {
+    pub const fn normals(&self) -> Vectors<'a> {
         self.normals
+    }
+    /// Position of vertex `i` (zero past the end).
+    #[inline]
+    pub const fn position(&self, i: usize) -> Vec3 {
+        self.positions.get(i)
+    }
+    /// Normal of vertex `i` (zero past the end).
+    #[inline]
+    pub const fn normal(&self, i: usize) -> Vec3 {
+        self.normals.get(i)
     }
     /// Texture coordinates, if any.
     pub const fn uvs(&self) -> Option<&'a [Vec2]> {
@@ -156,11 +272,12 @@ impl<'a> Mesh<'a> {
 }
 
 /// Center of the bounding box, radius to the farthest finite vertex.
-const fn bounding_sphere(p: &[Vec3]) -> Sphere {
+const fn bounding_sphere(p: &Vectors<'_>) -> Sphere {
     let (mut lo, mut hi) = ([f32::MAX; 3], [f32::MIN; 3]);
     let mut i = 0;
     while i < p.len() {
-        let v = [p[i].x, p[i].y, p[i].z];
+        let pi = p.get(i);
+        let v = [pi.x, pi.y, pi.z];
         if finite(v[0]) && finite(v[1]) && finite(v[2]) {
             let mut k = 0;
             while k < 3 {
@@ -182,7 +299,8 @@ const fn bounding_sphere(p: &[Vec3]) -> Sphere {
     let mut r2 = 0.0f64;
     i = 0;
     while i < p.len() {
-        let d = [p[i].x as f64 - c[0], p[i].y as f64 - c[1], p[i].z as f64 - c[2]];
+        let pi = p.get(i);
+        let d = [pi.x as f64 - c[0], pi.y as f64 - c[1], pi.z as f64 - c[2]];
         let l2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if l2 > r2 && l2 < f64::MAX {
             r2 = l2;

@@ -81,8 +81,8 @@ fn load_into<const M: usize, const MA: usize, const L: usize, const V: usize, co
         .iter()
         .map(|item| LoadedMesh {
             name: item.info.name.to_string(),
-            positions: item.mesh.positions().to_vec(),
-            normals: item.mesh.normals().to_vec(),
+            positions: item.mesh.positions().iter().collect(),
+            normals: item.mesh.normals().iter().collect(),
             uvs: item.mesh.uvs().map(<[Vec2]>::to_vec),
             indices: item.mesh.indices().to_vec(),
             model: item.model,

@@ -98,31 +98,6 @@ pub fn to_rust(b: &Baked) -> String {
     let p = crate::normalized_prefix(&b.options.prefix).unwrap_or_default();
     let mut o = String::new();
     header(&mut o, b);
-    let dequantize = format!("{}dequantize_vec3", p.to_ascii_lowercase());
-    if b.meshes.iter().any(|m| m.quantized.is_some()) {
-        let _ = write!(
-            o,
-            "\
-/// `q as f32 * scale + offset` per axis, in `f32` at compile time: the
-/// arithmetic of `soft3d_bake::dequantize`, so bake and firmware agree bit
-/// for bit.
-const fn {dequantize}<const N: usize>(q: &[[i16; 3]; N], scale: [f32; 3], offset: [f32; 3]) -> [{VEC3}; N] {{
-    let mut out = [{VEC3}::ZERO; N];
-    let mut i = 0;
-    while i < N {{
-        out[i] = {VEC3}::new(
-            q[i][0] as f32 * scale[0] + offset[0],
-            q[i][1] as f32 * scale[1] + offset[1],
-            q[i][2] as f32 * scale[2] + offset[2],
-        );
-        i += 1;
-    }}
-    out
-}}
-
-"
-        );
-    }
     scene(&mut o, b, &p);
     for m in &b.materials {
         let id = format!("{p}{}", m.ident);
@@ -149,7 +124,7 @@ const fn {dequantize}<const N: usize>(q: &[[i16; 3]; N], scale: [f32; 3], offset
         o.push('\n');
     }
     for m in &b.meshes {
-        mesh(&mut o, b, m, &p, &dequantize);
+        mesh(&mut o, b, m, &p);
     }
     for t in &b.textures {
         let id = format!("{p}{}", t.ident);
@@ -272,7 +247,7 @@ fn scene(o: &mut String, b: &Baked, p: &str) {
     let _ = writeln!(o, "];\n");
 }
 
-fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str, dequantize: &str) {
+fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
     let id = format!("{p}{}", m.ident);
     let n = m.positions.len();
     let name = quoted(&m.name);
@@ -287,13 +262,6 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str, dequantize: &str) {
             let _ = writeln!(o, "];\n");
         }
         Some(q) => {
-            let _ = writeln!(
-                o,
-                "// Mesh {name} is quantized to i16. Flash-resident i16 storage waits for core support:
-// soft3d's `Mesh` reads f32 only, so `{id}_POSITIONS` and `{id}_NORMALS` are
-// dequantized from the i16 arrays at compile time, and the i16 arrays stay out of
-// the binary unless something reads them."
-            );
             let _ = writeln!(o, "/// Positions of mesh {name} in steps: `q as f32 * {id}_POSITION_SCALE[k] + {id}_POSITION_OFFSET[k]`.");
             let _ = writeln!(o, "pub static {id}_POSITIONS_I16: [[i16; 3]; {n}] = [");
             packed(o, q.positions.iter().map(|v| format!("[{}, {}, {}]", v[0], v[1], v[2])));
@@ -307,16 +275,6 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str, dequantize: &str) {
             packed(o, q.normals.iter().map(|v| format!("[{}, {}, {}]", v[0], v[1], v[2])));
             let _ = writeln!(o, "];\n");
             let _ = writeln!(o, "/// Units per normal step (1/32767).\npub const {id}_NORMAL_SCALE: f32 = {};\n", float(NORMAL_SCALE));
-            let _ = writeln!(o, "/// Positions of mesh {name}, dequantized from `{id}_POSITIONS_I16`.");
-            let _ = writeln!(
-                o,
-                "pub static {id}_POSITIONS: [{VEC3}; {n}] = {dequantize}(&{id}_POSITIONS_I16, {id}_POSITION_SCALE, {id}_POSITION_OFFSET);"
-            );
-            let _ = writeln!(o, "/// Normals of mesh {name}, dequantized from `{id}_NORMALS_I16`.");
-            let _ = writeln!(
-                o,
-                "pub static {id}_NORMALS: [{VEC3}; {n}] = {dequantize}(&{id}_NORMALS_I16, [{id}_NORMAL_SCALE; 3], [0.0; 3]);\n"
-            );
         }
     }
     if let Some(uvs) = &m.uvs {
@@ -335,7 +293,13 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str, dequantize: &str) {
         None => String::new(),
     };
     let _ = writeln!(o, "/// Mesh {name}: {n} vertices, {} triangles{what}. Validated at compile time.", m.indices.len() / 3);
-    let _ = writeln!(o, "pub static {id}: ::soft3d::mesh::Mesh<'static> = match ::soft3d::mesh::Mesh::new(&{id}_POSITIONS, &{id}_NORMALS, &{id}_INDICES) {{");
+    let new = match &m.quantized {
+        None => format!("::soft3d::mesh::Mesh::new(&{id}_POSITIONS, &{id}_NORMALS, &{id}_INDICES)"),
+        Some(_) => format!(
+            "::soft3d::mesh::Mesh::new_i16(&{id}_POSITIONS_I16, {id}_POSITION_SCALE, {id}_POSITION_OFFSET, &{id}_NORMALS_I16, &{id}_INDICES)"
+        ),
+    };
+    let _ = writeln!(o, "pub static {id}: ::soft3d::mesh::Mesh<'static> = match {new} {{");
     match &m.uvs {
         Some(_) => {
             let _ = writeln!(o, "    ::core::result::Result::Ok(mesh) => match mesh.with_uvs(&{id}_UVS) {{");

@@ -1,22 +1,21 @@
-//! `i16` quantization of positions and normals.
+//! `i16` quantization of positions and normals, by the core's
+//! `soft3d::mesh::QuantizedMesh` (so a mesh quantized at run time holds the
+//! same steps), and the error it introduces.
 //!
 //! Positions: per mesh and per axis, `offset` is the middle of the bounding
 //! box and `scale` the model units per step, chosen so that the box fits in
 //! ±32767 steps. Normals: `scale` 1/32767, no offset. Both dequantize as
-//! `q as f32 * scale + offset` in `f32` ([`dequantize`]), the arithmetic the
-//! generated `const fn` repeats, so bake and target agree bit for bit.
+//! `q as f32 * scale + offset` in `f32` ([`dequantize`]), the arithmetic
+//! `soft3d::mesh::Mesh::new_i16` meshes use when the vertex stage reads
+//! them, so bake and target agree bit for bit.
 
 use crate::BakeError;
 use soft3d::math::Vec3;
 
-/// Largest quantized magnitude (symmetric range, -32768 unused).
-const Q_MAX: i32 = 32767;
+pub use soft3d::mesh::NORMAL_SCALE;
 
-/// Model units per step of a quantized normal component.
-pub const NORMAL_SCALE: f32 = 1.0 / 32767.0;
-
-/// `q as f32 * scale + offset`, in `f32`: the dequantization the generated
-/// source performs at compile time.
+/// `q as f32 * scale + offset`, in `f32`: the dequantization the renderer
+/// performs on an `i16` mesh.
 pub fn dequantize(q: i16, scale: f32, offset: f32) -> f32 {
     q as f32 * scale + offset
 }
@@ -103,22 +102,16 @@ pub fn quantize(name: &str, positions: &[Vec3], normals: &[Vec3]) -> Result<Quan
         return Err(bad("normal", i));
     }
 
-    let mut lo = [f32::INFINITY; 3];
-    let mut hi = [f32::NEG_INFINITY; 3];
-    for p in positions {
-        for (k, v) in [p.x, p.y, p.z].into_iter().enumerate() {
-            lo[k] = lo[k].min(v);
-            hi[k] = hi[k].max(v);
-        }
-    }
-    // An empty mesh has no box: scale and offset 0.
-    let params = [0, 1, 2].map(|k| if lo[k] <= hi[k] { axis(lo[k], hi[k]) } else { (0.0, 0.0) });
-    let scale = params.map(|p| p.0);
-    let offset = params.map(|p| p.1);
-
-    let qp: Vec<[i16; 3]> = positions.iter().map(|p| [0, 1, 2].map(|k| quantize_axis(component(*p, k), scale[k], offset[k]))).collect();
-    let qn: Vec<[i16; 3]> = normals.iter().map(|n| [n.x, n.y, n.z].map(quantize_unit)).collect();
-    let mut q = QuantizedMesh { positions: qp, position_scale: scale, position_offset: offset, normals: qn, error: Default::default() };
+    let core = soft3d::mesh::QuantizedMesh::new(positions, normals)
+        .map_err(|e| BakeError::Mesh { name: name.to_string(), problem: format!("{e} (bake with f32)") })?;
+    let scale = core.position_scale;
+    let mut q = QuantizedMesh {
+        positions: core.positions,
+        position_scale: core.position_scale,
+        position_offset: core.position_offset,
+        normals: core.normals,
+        error: Default::default(),
+    };
 
     let radius = soft3d::mesh::Mesh::new(positions, normals, &[]).map(|m| m.bounds().radius as f64).unwrap_or(0.0);
     let mut e = QuantizationError { radius, ..Default::default() };
@@ -146,50 +139,7 @@ pub fn quantize(name: &str, positions: &[Vec3], normals: &[Vec3]) -> Result<Quan
 }
 
 fn component(v: Vec3, k: usize) -> f32 {
-    match k {
-        0 => v.x,
-        1 => v.y,
-        _ => v.z,
-    }
-}
-
-/// Scale and offset fitting `[lo, hi]` into ±32767 steps. The scale is
-/// rounded up to the next `f32` if needed, so the extremes stay in range.
-fn axis(lo: f32, hi: f32) -> (f32, f32) {
-    let offset = ((lo as f64 + hi as f64) * 0.5) as f32;
-    let half = (hi as f64 - offset as f64).max(offset as f64 - lo as f64);
-    if half <= 0.0 {
-        return (0.0, offset);
-    }
-    let mut scale = (half / Q_MAX as f64) as f32;
-    while (scale as f64) * (Q_MAX as f64) < half {
-        scale = f32::from_bits(scale.to_bits() + 1);
-    }
-    (scale, offset)
-}
-
-/// The step count whose `f32` dequantization lands nearest to `v`: the
-/// rounded quotient, or a neighbor when `f32` rounding favors it.
-fn quantize_axis(v: f32, scale: f32, offset: f32) -> i16 {
-    if scale == 0.0 {
-        return 0;
-    }
-    let q0 = ((v as f64 - offset as f64) / scale as f64).round().clamp(-(Q_MAX as f64), Q_MAX as f64) as i32;
-    let mut best = (q0, f64::INFINITY);
-    for q in [q0, q0 - 1, q0 + 1] {
-        if q.abs() <= Q_MAX {
-            let err = (dequantize(q as i16, scale, offset) as f64 - v as f64).abs();
-            if err < best.1 {
-                best = (q, err);
-            }
-        }
-    }
-    best.0 as i16
-}
-
-/// A unit-range component in steps of 1/32767.
-fn quantize_unit(v: f32) -> i16 {
-    (v as f64 * Q_MAX as f64).round().clamp(-(Q_MAX as f64), Q_MAX as f64) as i16
+    v.to_array()[k]
 }
 
 /// The angle between two vectors in degrees (0 if either is zero), from

@@ -183,7 +183,7 @@ impl fmt::Display for Report {
                 writeln!(
                     f,
                     "  i16 positions: error max {:.3e} ({:.2e} of the bounding radius {:.4}), rms {:.3e} ({:.2e}), \
-                     ≤ {:.3} steps per axis; normals: max {:.4}°; {} bytes once the core reads i16",
+                     ≤ {:.3} steps per axis; normals: max {:.4}°; {} bytes",
                     e.max_position,
                     e.max_relative(),
                     e.radius,

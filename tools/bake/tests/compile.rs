@@ -29,6 +29,9 @@ struct Module {
     /// The `.babylon` file it came from, baked as f32: compared with the
     /// run-time parse.
     runtime_source: Option<PathBuf>,
+    /// The `.babylon` file it came from, baked as i16: compared with the
+    /// run-time parse quantized at run time.
+    quantized_source: Option<PathBuf>,
 }
 
 fn bits3(v: &[Vec3]) -> String {
@@ -59,6 +62,10 @@ mod tests {
     fn bits3(v: &[Vec3]) -> Vec<[u32; 3]> {
         v.iter().map(|v| [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]).collect()
     }
+    /// Positions or normals as the renderer reads them (dequantized if i16).
+    fn vbits(v: soft3d::mesh::Vectors<'_>) -> Vec<[u32; 3]> {
+        v.iter().map(|v| [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]).collect()
+    }
     fn bits2(v: &[Vec2]) -> Vec<[u32; 2]> {
         v.iter().map(|v| [v.x.to_bits(), v.y.to_bits()]).collect()
     }
@@ -84,6 +91,18 @@ mod tests {
         let mut sink = soft3d::scenes::FrameChecksum::new(64, 48, Rgb565::BLACK);
         frame.finish(&mut sink).unwrap();
         sink.drawn
+    }
+    /// Checksum and pixels drawn of one Gouraud mesh in a 64×48 frame.
+    fn checksum(mesh: &Mesh<'_>, model: &soft3d::math::Mat4, camera: &soft3d::Camera, lights: &soft3d::Lights) -> (u32, u32) {
+        use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+        use soft3d::{effect::Gouraud, Material, Renderer};
+        let material = Material::new(Gouraud);
+        let mut renderer: Box<Renderer<Rgb565, 64, 48, 16, 2048, 4096>> = Box::new(Renderer::new(Rgb565::BLACK));
+        let mut frame = renderer.begin_frame(camera, lights, Rgb565::BLACK);
+        frame.draw(mesh, model, &material).unwrap();
+        let mut sink = soft3d::scenes::FrameChecksum::new(64, 48, Rgb565::BLACK);
+        frame.finish(&mut sink).unwrap();
+        (sink.sum, sink.drawn)
     }
     /// Draws one mesh with a baked texture; returns the pixels drawn.
     fn render_textured(
@@ -118,8 +137,8 @@ mod tests {
             let _ = writeln!(expected, "    pub static {e}_POSITIONS: [[u32; 3]; {n}] = {};", bits3(&mesh.positions));
             let _ = writeln!(expected, "    pub static {e}_NORMALS: [[u32; 3]; {n}] = {};", bits3(&mesh.normals));
             let _ = writeln!(tests, "        let m = &crate::{name}::{id};");
-            let _ = writeln!(tests, "        assert_eq!(bits3(m.positions()), crate::expected::{e}_POSITIONS, \"{name} {id}\");");
-            let _ = writeln!(tests, "        assert_eq!(bits3(m.normals()), crate::expected::{e}_NORMALS, \"{name} {id}\");");
+            let _ = writeln!(tests, "        assert_eq!(vbits(m.positions()), crate::expected::{e}_POSITIONS, \"{name} {id}\");");
+            let _ = writeln!(tests, "        assert_eq!(vbits(m.normals()), crate::expected::{e}_NORMALS, \"{name} {id}\");");
             if let Some(uvs) = &mesh.uvs {
                 let _ = writeln!(expected, "    pub static {e}_UVS: [[u32; 2]; {n}] = {};", bits2(uvs));
                 let _ = writeln!(tests, "        assert_eq!(bits2(m.uvs().unwrap()), crate::expected::{e}_UVS);");
@@ -177,6 +196,40 @@ mod tests {
         }
         let _ = writeln!(tests, "    }}\n");
 
+        if let Some(source) = &m.quantized_source {
+            let json = std::fs::read(source).unwrap();
+            let r = requirements(&json).unwrap();
+            let caps = [r.meshes, r.materials, r.lights, r.vertices, r.uvs, r.indices].map(|c| c.max(1));
+            let _ = writeln!(
+                tests,
+                "    #[test]
+    fn {name}_renders_like_the_runtime_parse_quantized_at_run_time() {{
+        let json = include_bytes!({source:?});
+        let mut scene = Box::new(soft3d::babylon::BabylonScene::<{}, {}, {}, {}, {}, {}>::new());
+        scene.load(json).unwrap();
+        let items: Vec<_> = scene.iter().collect();
+        assert_eq!(items.len(), crate::{name}::{p}MESHES.len());
+        for (item, (baked, model, _, _)) in items.iter().zip(crate::{name}::{p}MESHES.iter()) {{
+            let positions: Vec<Vec3> = item.mesh.positions().iter().collect();
+            let normals: Vec<Vec3> = item.mesh.normals().iter().collect();
+            let q = soft3d::mesh::QuantizedMesh::new(&positions, &normals).unwrap();
+            let mut runtime = q.mesh(item.mesh.indices()).unwrap();
+            if let Some(uvs) = item.mesh.uvs() {{
+                runtime = runtime.with_uvs(uvs).unwrap();
+            }}
+            assert_eq!(runtime.positions(), baked.positions());
+            assert_eq!(runtime.normals(), baked.normals());
+            let camera = crate::{name}::{p}CAMERA;
+            let lights = crate::{name}::{p}LIGHTS;
+            let a = checksum(&runtime, model, &camera, &lights);
+            assert_eq!(a, checksum(baked, model, &camera, &lights));
+            assert!(a.1 > 20, \"{name}: only {{}} pixels drawn\", a.1);
+        }}
+    }}
+",
+                caps[0], caps[1], caps[2], caps[3], caps[4], caps[5]
+            );
+        }
         if let Some(source) = &m.runtime_source {
             let json = std::fs::read(source).unwrap();
             let r = requirements(&json).unwrap();
@@ -191,8 +244,8 @@ mod tests {
         let items: Vec<_> = scene.iter().collect();
         assert_eq!(items.len(), crate::{name}::{p}MESHES.len());
         for (item, (mesh, model, color, cull)) in items.iter().zip(crate::{name}::{p}MESHES.iter()) {{
-            assert_eq!(bits3(item.mesh.positions()), bits3(mesh.positions()));
-            assert_eq!(bits3(item.mesh.normals()), bits3(mesh.normals()));
+            assert_eq!(vbits(item.mesh.positions()), vbits(mesh.positions()));
+            assert_eq!(vbits(item.mesh.normals()), vbits(mesh.normals()));
             assert_eq!(item.mesh.uvs().map(bits2), mesh.uvs().map(bits2));
             assert_eq!(item.mesh.indices(), mesh.indices());
             assert_eq!(item.model.m.map(|r| r.map(f32::to_bits)), model.m.map(|r| r.map(f32::to_bits)));
@@ -220,7 +273,7 @@ mod tests {
     tests.push_str(
         "    #[test]
     fn the_build_script_bakes_the_same_scene() {
-        assert_eq!(bits3(crate::from_build_rs::BUILT_TRI_ANGLE.positions()), bits3(crate::inline::TRI_ANGLE.positions()));
+        assert_eq!(vbits(crate::from_build_rs::BUILT_TRI_ANGLE.positions()), vbits(crate::inline::TRI_ANGLE.positions()));
         assert_eq!(crate::from_build_rs::BUILT_TINY_TEXELS, crate::inline::TINY_TEXELS);
         assert_eq!(crate::from_build_rs::BUILT_MESHES.len(), 2);
     }
@@ -274,7 +327,9 @@ fn generated_source_compiles_and_holds_the_baked_bits() {
         format!(
             "[package]\nname = \"soft3d-bake-check\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[workspace]\n\n\
              [dependencies]\nsoft3d = {{ path = {:?} }}\nembedded-graphics = \"0.8.1\"\n\n\
+             [dev-dependencies]\nsoft3d = {{ path = {:?}, features = [\"std\"] }}\n\n\
              [build-dependencies]\nsoft3d-bake = {{ path = {:?} }}\n",
+            repo.to_str().unwrap(),
             repo.to_str().unwrap(),
             env!("CARGO_MANIFEST_DIR")
         ),
@@ -296,14 +351,14 @@ fn generated_source_compiles_and_holds_the_baked_bits() {
     let inline = |options: Options| {
         bake_babylon(inline_scene("tiny.png").as_bytes(), &Options { textures: Some(textures.clone()), ..options }).unwrap()
     };
-    modules.push(Module { name: "inline".into(), baked: inline(Options::default()), runtime_source: None });
+    modules.push(Module { name: "inline".into(), baked: inline(Options::default()), runtime_source: None, quantized_source: None });
     // A texture with transparent pixels: its alpha plane must compile into the texture.
     let glass: Vec<[u8; 4]> = PIXELS.iter().enumerate().map(|(i, &[r, g, b])| [r, g, b, (i * 36) as u8]).collect();
     write_rgba_png(&textures.join("glass.png"), 4, 2, &glass);
     let alpha =
         bake_babylon(inline_scene("glass.png").as_bytes(), &Options { textures: Some(textures.clone()), ..Options::default() }).unwrap();
     assert!(alpha.textures[0].alpha.is_some());
-    modules.push(Module { name: "alpha".into(), baked: alpha, runtime_source: None });
+    modules.push(Module { name: "alpha".into(), baked: alpha, runtime_source: None, quantized_source: None });
     modules.push(Module {
         name: "inline_i16".into(),
         baked: inline(Options {
@@ -313,13 +368,24 @@ fn generated_source_compiles_and_holds_the_baked_bits() {
             ..Options::default()
         }),
         runtime_source: None,
+        quantized_source: None,
     });
     for (name, _, _) in SCENES {
         let Some(path) = asset(&format!("{name}.babylon")) else { continue };
-        modules.push(Module { name: name.into(), baked: bake(&path, &Options::default()).unwrap(), runtime_source: Some(path.clone()) });
+        modules.push(Module {
+            name: name.into(),
+            baked: bake(&path, &Options::default()).unwrap(),
+            runtime_source: Some(path.clone()),
+            quantized_source: None,
+        });
         let i16 =
             Options { quantize: Quantize::I16, texture_format: TextureFormat::Palette8, max_texture_size: Some(64), ..Options::default() };
-        modules.push(Module { name: format!("{name}_i16"), baked: bake(&path, &i16).unwrap(), runtime_source: None });
+        modules.push(Module {
+            name: format!("{name}_i16"),
+            baked: bake(&path, &i16).unwrap(),
+            runtime_source: None,
+            quantized_source: Some(path.clone()),
+        });
     }
     for m in &modules {
         std::fs::write(src.join(format!("{}.rs", m.name)), m.baked.to_rust()).unwrap();
