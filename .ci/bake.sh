@@ -16,6 +16,15 @@
   # Includes tests/compile.rs, which builds (and clippy-checks, and tests)
   # the generated source in a scratch no_std crate under target/tmp.
   cargo test
+  # The demo's baked crate (src/scenes/crate_scene.rs) must be what the
+  # bake tool makes of assets/demo today.
+  fresh=$(mktemp -d)
+  cargo run --quiet --release -- ../../assets/demo/crate.babylon -o "$fresh/crate_scene.rs" --quantize i16 >/dev/null
+  if ! diff -u ../../src/scenes/crate_scene.rs "$fresh/crate_scene.rs"; then
+    echo "src/scenes/crate_scene.rs is stale; rebake it with the command in src/scenes/mod.rs"
+    exit 1
+  fi
+  rm -rf "$fresh"
   # CLI smoke test on a real scene (the shared assets are never copied
   # into the repository; they sit beside it when present).
   monkey=../../../shared/assets/monkey.babylon

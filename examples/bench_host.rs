@@ -9,14 +9,15 @@ use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::RgbColor;
 use soft3d::host::scene::HostScene;
 use soft3d::scenes::{
-    demo_camera, demo_lights, draw_bench, headlight, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VERTICES, FILE_SCENES, WHITE,
+    demo_camera, demo_lights, draw_bench, headlight, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES,
+    FILE_SCENES, WHITE,
 };
 use soft3d::{HostRenderer, Settings};
 
 const ASSETS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/assets");
 
 fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
-    let mut r: HostRenderer<Rgb565, 3, S> =
+    let mut r: HostRenderer<Rgb565, DEMO_VARYINGS, S> =
         HostRenderer::new(320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).expect("valid sizes");
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);

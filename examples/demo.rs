@@ -14,14 +14,14 @@
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::RgbColor;
 use soft3d::host::{GifRecorder, Image};
-use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VERTICES};
+use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::{FixedPoint, Renderer};
 use std::time::Instant;
 
 const W: usize = 320;
 const H: usize = 240;
 const STRIP: usize = 16;
-type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, 3, FixedPoint>;
+type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, DEMO_VARYINGS, FixedPoint>;
 
 fn main() {
     let mut frames = 72usize;

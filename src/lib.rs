@@ -43,6 +43,8 @@
 
 #[cfg(any(feature = "std", test))]
 extern crate std;
+// Baked scenes name the crate `::soft3d`, wherever they are included.
+extern crate self as soft3d;
 
 #[cfg(feature = "babylon")]
 pub mod babylon;

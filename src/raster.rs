@@ -229,8 +229,10 @@ impl<S: Interp> Plane<S> {
         let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
         let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
         let (gx, gy) = (S::from_f32(dx), S::from_f32(dy));
-        // Rounding moves a gradient by far less than 1; saturation by more.
-        let wide = S::WRAPS && ((gx.to_f32() - dx).abs() > 1.0 || (gy.to_f32() - dy).abs() > 1.0);
+        // 16.16 saturates gradients beyond ±32768 (a sliver's depth): a
+        // bound check is two compares where a round trip costs four float
+        // operations, in software on an M0+.
+        let wide = S::WRAPS && !(dx.abs() < 32_000.0 && dy.abs() < 32_000.0);
         Self { at_a: S::from_f32(va), dx: gx, dy: gy, lo: S::from_f32(lo), hi: S::from_f32(hi), wide: wide.then_some((va, dx, dy)) }
     }
 
@@ -445,6 +447,18 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     }
 }
 
+/// Keeps LLVM from unrolling a span loop on Arm. For M-class cores it
+/// unrolls small loops 4 times by default, which gives every interpolated
+/// value four copies, more than the 13 registers hold: the spills cost more
+/// than the loop overhead saved. `black_box` is an empty inline `asm!` to
+/// LLVM, which counts as a call, and its Arm unroller leaves loops with
+/// calls alone; it emits no instruction.
+#[inline(always)]
+fn no_unroll() {
+    #[cfg(target_arch = "arm")]
+    core::hint::black_box(());
+}
+
 /// `floor` for any finite `f32` (values from 2^23 up are integers).
 #[inline]
 fn floor(v: f32) -> f32 {
@@ -510,6 +524,7 @@ fn span<C, S, E, P, D>(
             }
             let pixels = color[start..start + seg].iter_mut().zip(depth[start..start + seg].iter_mut());
             for (px, zb) in pixels {
+                no_unroll();
                 let zq = z.depth16();
                 if !D::TEST || zq > *zb {
                     if D::WRITE {
@@ -528,6 +543,7 @@ fn span<C, S, E, P, D>(
         return;
     }
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
+        no_unroll();
         let zq = z.depth16();
         if !D::TEST || zq > *zb {
             if D::WRITE {

@@ -78,10 +78,10 @@ impl<E: Effect> VertexStage<'_, E> {
         let (position, normal) = if !E::LIT_VERTICES {
             (Vec3::ZERO, Vec3::ZERO)
         } else if self.model_space {
-            // Unit normals are used as they are (no square root); others
-            // (including zero and NaN) are normalized like the world path.
+            // A mesh of unit normals (checked once, when it was built) is
+            // used as it is; any other is normalized like the world path.
             let n = mesh.normal(i);
-            let n = if (n.length_squared() - 1.0).abs() <= 1e-4 { n } else { n.normalize_or_zero() };
+            let n = if mesh.unit_normals() { n } else { n.normalize_or_zero() };
             (mesh.position(i), n)
         } else {
             let n = self.normal_matrix.transform(mesh.normal(i)).normalize_or_zero();

@@ -26,7 +26,7 @@
 //!
 //! for item in scene.iter() {
 //!     assert_eq!(item.mesh.triangle_count(), 1);
-//!     assert_eq!(item.mesh.normals()[0], Vec3::new(0.0, 0.0, -1.0)); // normalized on load
+//!     assert_eq!(item.mesh.normal(0), Vec3::new(0.0, 0.0, -1.0)); // normalized on load
 //!     assert_eq!(item.model.transform_point3(Vec3::ZERO), Vec3::new(0.0, 1.0, 0.0));
 //!     assert_eq!(item.material.map(|m| m.diffuse), Some(Vec3::new(1.0, 0.0, 0.0)));
 //!     // frame.draw(&item.mesh, &item.model, &material)?;

@@ -159,6 +159,7 @@ pub struct Mesh<'a> {
     colors: Option<&'a [Rgb888]>,
     indices: &'a [u16],
     bounds: Sphere,
+    unit_normals: bool,
 }
 
 impl<'a> Mesh<'a> {
@@ -206,7 +207,8 @@ impl<'a> Mesh<'a> {
             i += 1;
         }
         let bounds = bounding_sphere(&positions);
-        Ok(Self { positions, normals, uvs: None, colors: None, indices, bounds })
+        let unit_normals = all_unit_or_zero(&normals);
+        Ok(Self { positions, normals, uvs: None, colors: None, indices, bounds, unit_normals })
     }
 
     /// Adds texture coordinates, one per position.
@@ -265,10 +267,32 @@ impl<'a> Mesh<'a> {
     pub const fn vertex_count(&self) -> usize {
         self.positions.len()
     }
+    /// Whether every normal is unit length (within 1e-4 of 1 squared) or
+    /// zero, checked once when the mesh is built (at compile time for a
+    /// `static`), so lighting normalizes per vertex only when it must.
+    pub const fn unit_normals(&self) -> bool {
+        self.unit_normals
+    }
     /// Bounding sphere in model space (non-finite positions are left out).
     pub const fn bounds(&self) -> Sphere {
         self.bounds
     }
+}
+
+/// Whether every vector is zero or of unit length (squared length within
+/// 1e-4 of 1); false for any non-finite one.
+const fn all_unit_or_zero(v: &Vectors<'_>) -> bool {
+    let mut i = 0;
+    while i < v.len() {
+        let n = v.get(i);
+        let l2 = n.x * n.x + n.y * n.y + n.z * n.z;
+        let unit = l2 > 1.0 - 1e-4 && l2 < 1.0 + 1e-4;
+        if !(unit || l2 == 0.0) {
+            return false;
+        }
+        i += 1;
+    }
+    true
 }
 
 /// Center of the bounding box, radius to the farthest finite vertex.

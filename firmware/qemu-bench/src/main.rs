@@ -20,7 +20,7 @@ use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
-use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VERTICES};
+use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::{Renderer, Settings};
 
 /// The shared Blender exports, baked by `build.rs` (see `tools/bake`).
@@ -158,7 +158,7 @@ impl DrawTarget for TimedSink {
     }
 }
 
-type BenchRenderer<S> = Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, 3, S>;
+type BenchRenderer<S> = Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, DEMO_VARYINGS, S>;
 
 fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     let mut renderer: BenchRenderer<S> = Renderer::new(Rgb565::BLACK);
@@ -183,7 +183,7 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     }
 }
 
-type BenchFrame<'r, S> = soft3d::Frame<'r, 'static, Rgb565, 3, S>;
+type BenchFrame<'r, S> = soft3d::Frame<'r, 'static, Rgb565, DEMO_VARYINGS, S>;
 
 fn measure<S: Settings>(
     timer: &mut Timer,

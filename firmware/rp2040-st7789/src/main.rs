@@ -23,7 +23,7 @@ use rp2040_hal::fugit::RateExtU32;
 use rp2040_hal::gpio::{FunctionSpi, Pins};
 use rp2040_hal::{self as hal, pac, Clock};
 use rtt_target::{rprintln, rtt_init_print};
-use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VERTICES};
+use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::{FixedPoint, Renderer};
 use static_cell::ConstStaticCell;
 
@@ -49,7 +49,7 @@ const W: usize = 320;
 const H: usize = 240;
 const STRIP: usize = 16;
 
-type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, 3, FixedPoint>;
+type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, DEMO_VARYINGS, FixedPoint>;
 
 /// The renderer's buffers (73 KB), built at compile time (`Renderer::new`
 /// is a `const fn`) so that they never pass through the stack. A renderer

@@ -19,7 +19,7 @@ use mipidsi::interface::SpiInterface;
 use mipidsi::models::ILI9341Rgb565;
 use mipidsi::options::{ColorOrder, Orientation, Rotation};
 use rtt_target::{rprintln, rtt_init_print};
-use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VERTICES};
+use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::{FloatingPoint, Renderer};
 use static_cell::ConstStaticCell;
 use stm32f4xx_hal::dwt::MonoTimer;
@@ -42,7 +42,7 @@ const W: usize = 320;
 const H: usize = 240;
 const STRIP: usize = 16;
 
-type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, 3, FloatingPoint>;
+type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, DEMO_VARYINGS, FloatingPoint>;
 
 /// The renderer's buffers (73 KB), built at compile time (`Renderer::new`
 /// is a `const fn`) so that they never pass through the stack. A renderer

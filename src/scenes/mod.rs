@@ -1,8 +1,9 @@
-//! Built-in scenes made of generated meshes, shared by the demo, the tests
-//! and the benchmarks, so that none of them needs a file.
+//! Built-in scenes, shared by the demo, the board firmware, the tests and
+//! the benchmarks, so that none of them needs a file: meshes generated at
+//! compile time, and a crate baked by the bake tool ([`crate_scene`]).
 
-use crate::effect::{Color, Flat, Gouraud};
-use crate::material::Material;
+use crate::effect::{Color, Gouraud, Textured};
+use crate::material::{Material, PerSpan};
 use crate::math::{Mat4, Vec3};
 use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, Mesh, MeshData};
 use crate::renderer::{DrawError, Frame};
@@ -12,6 +13,17 @@ use crate::tri::TriVertex;
 use embedded_graphics::pixelcolor::{IntoStorage, PixelColor, Rgb888};
 use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Pixel, Size};
 use embedded_graphics::primitives::Rectangle;
+
+/// A textured wooden crate, baked by `tools/bake` (i16 geometry, RGB565
+/// texture) from `assets/demo/crate.babylon`, which
+/// `scripts/make-demo-scene.py` writes. CI checks that the file is current;
+/// rebake from `tools/bake` with
+/// `cargo run --release -- ../../assets/demo/crate.babylon -o ../../src/scenes/crate_scene.rs --quantize i16`.
+#[rustfmt::skip]
+#[allow(clippy::all, clippy::pedantic)]
+pub mod crate_scene {
+    include!("crate_scene.rs");
+}
 
 static TORUS_DATA: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
 static SPHERE_DATA: MeshData<{ sphere_vertex_count(24, 16) }, { sphere_index_count(24, 16) }> = MeshData::uv_sphere(24, 16, 0.8);
@@ -28,11 +40,14 @@ pub static CUBE: Mesh<'static> = CUBE_DATA.mesh();
 
 /// Gouraud-shaded orange.
 pub static ORANGE: Material<Gouraud> = Material::new(Gouraud).with_color(Rgb888::new(255, 140, 40));
-/// Flat-shaded blue.
-pub static BLUE: Material<Flat> = Material::new(Flat).with_color(Rgb888::new(70, 130, 255));
+/// The baked crate's texture, lit per vertex, perspective-correct every 16 pixels.
+pub static CRATE: Material<Textured<'static>, PerSpan<16>> =
+    Material::new(Textured::new(crate_scene::CRATE_TEXTURE)).with_cull(crate_scene::CRATE_CULL).with_perspective::<PerSpan<16>>();
 /// Gouraud-shaded green.
 pub static GREEN: Material<Gouraud> = Material::new(Gouraud).with_color(Rgb888::new(90, 220, 110));
 
+/// Varyings per vertex the demo scene needs (the textured crate's five).
+pub const DEMO_VARYINGS: usize = 5;
 /// Vertices the demo scene needs per frame (plus room for clipping).
 pub const DEMO_VERTICES: usize = 1100;
 /// Triangles the demo scene can queue per frame.
@@ -54,7 +69,8 @@ pub fn demo_lights() -> Lights {
 }
 
 /// Draws the demo scene at time `t` (seconds): a spinning Gouraud torus
-/// between a flat cube and a Gouraud sphere.
+/// between the baked, textured crate and a Gouraud sphere. The renderer
+/// must store [`DEMO_VARYINGS`] varyings per vertex.
 pub fn draw_demo<C, const V: usize, S>(frame: &mut Frame<'_, '_, C, V, S>, t: f32) -> Result<(), DrawError>
 where
     C: Color,
@@ -63,7 +79,7 @@ where
     let spin = Mat4::rotation_y(t * 0.9) * Mat4::rotation_x(0.6 + t * 0.5);
     frame.draw(&TORUS, &spin, &ORANGE)?;
     let cube = Mat4::translation(Vec3::new(-2.4, 0.0, 0.5)) * Mat4::rotation_y(-t * 1.3) * Mat4::rotation_x(0.5);
-    frame.draw(&CUBE, &cube, &BLUE)?;
+    frame.draw(&crate_scene::CRATE, &cube, &CRATE)?;
     let sphere = Mat4::translation(Vec3::new(2.4, 0.2 * crate::math::sin(t * 2.0), 0.5)) * Mat4::rotation_y(t);
     frame.draw(&SPHERE, &sphere, &GREEN)
 }
