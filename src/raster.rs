@@ -376,7 +376,12 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
             (va, vb, vc) = (va - shift, vb - shift, vc - shift);
         }
         *p = Plane::new(&shape, va * qa, vb * qb, vc * qc, ranges[i]);
-        bounds[i] = (S::from_f32(ranges[i].0), S::from_f32(ranges[i].1));
+        // After a perspective division the value is clamped to the vertex
+        // values' range (within the effect's): rounding of the two planes
+        // must not push a constant channel off its value.
+        let lo = va.min(vb).min(vc).max(ranges[i].0);
+        let hi = va.max(vb).max(vc).min(ranges[i].1).max(lo);
+        bounds[i] = (S::from_f32(lo), S::from_f32(hi));
     }
     // With a wrapping scalar, a plane whose rounded gradients leave its
     // range at a vertex takes the careful path (clamped span ends).
@@ -394,7 +399,9 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     // origin's plus whole steps right and down (exactly what stepping gives).
     let min_x = a.x.min(b.x).min(c.x);
     let x_base = (min_x >> f).clamp(0, width - 1);
-    let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_start << f) + (1 << (f - 1)) - a.y);
+    // Rows count from the triangle's first row, not the strip's, so `f32`
+    // rounding is the same whatever the strip height.
+    let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_top << f) + (1 << (f - 1)) - a.y);
     let z0 = z.at(ox, oy, f);
     let q0 = q.at(ox, oy, f);
     let mut v0 = [S::default(); MAX_VARYINGS];
@@ -433,7 +440,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
                 }
                 span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
             } else {
-                let (k, j) = (x0 - x_base, y - y_start);
+                let (k, j) = (x0 - x_base, y - y_top);
                 for i in 0..n {
                     vals[i] = v0[i].add_mul(vary[i].dy, j).add_mul(v_dx[i], k);
                 }
@@ -512,15 +519,20 @@ fn span<C, S, E, P, D>(
         let mut start = 0;
         while start < len {
             let seg = (len - start).min(P::SPAN as usize);
-            let q_end = q.add_mul(q_dx, seg as i32);
+            // The last segment ends at the span's last pixel: one pixel
+            // further is outside the triangle, where 1/w may be near zero.
+            let reach = if start + seg == len { seg - 1 } else { seg } as i32;
+            let q_end = q.add_mul(q_dx, reach);
             let mut v_end = vals;
             for i in 0..E::VARYINGS {
-                v_end[i] = vals[i].add_mul(v_dx[i], seg as i32);
+                v_end[i] = vals[i].add_mul(v_dx[i], reach);
             }
             let end = divide(&v_end, q_end);
             let mut step = [S::default(); MAX_VARYINGS];
-            for i in 0..E::VARYINGS {
-                step[i] = end[i].sub(cur[i]).div_int(seg as i32);
+            if reach > 0 {
+                for i in 0..E::VARYINGS {
+                    step[i] = end[i].sub(cur[i]).div_int(reach);
+                }
             }
             let pixels = color[start..start + seg].iter_mut().zip(depth[start..start + seg].iter_mut());
             for (px, zb) in pixels {

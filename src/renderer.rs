@@ -95,6 +95,10 @@ impl core::fmt::Display for DrawError {
 #[cfg(feature = "std")]
 impl std::error::Error for DrawError {}
 
+/// Largest window coordinate (pixels) a window-space triangle may have:
+/// beyond it an edge's length could overflow `f64`.
+pub const WINDOW_LIMIT: f64 = 1e300;
+
 /// What happened to the geometry of a frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct FrameStats {
@@ -489,7 +493,10 @@ where
             let mut poly: Polygon<WindowVertex<V>> = Polygon::new();
             let mut valid = true;
             for v in &tri {
-                valid &= v.x.is_finite() && v.y.is_finite() && v.z.is_finite() && v.w.is_finite() && v.w > 0.0;
+                // Beyond ±1e300 pixels an edge's length can overflow f64 and
+                // no clip could place it: such coordinates are invalid.
+                let placeable = |c: f64| c.abs() <= WINDOW_LIMIT;
+                valid &= placeable(v.x) && placeable(v.y) && v.z.is_finite() && v.w.is_finite() && v.w > 0.0;
                 let _ = poly.push(WindowVertex { x: v.x, y: v.y, z: v.z, q: 1.0 / v.w, attrs: attrs(v), src: NO_SOURCE });
             }
             self.stats.triangles += 1;
@@ -583,7 +590,23 @@ where
             let i = self.push_vertex(ScreenVertex { x, y, z: v.z, q: v.q, attrs: v.attrs })?;
             let _ = idx.push(i);
         }
-        for k in 1..idx.len().saturating_sub(1) {
+        // Snapping can push a clipped polygon's nearly collinear vertices
+        // past each other: a fan piece then turns over and would cover its
+        // neighbours' pixels a second time. Pieces wound against the whole
+        // polygon are such slivers and are dropped (counted degenerate).
+        let cross = |a: (i64, i64), b: (i64, i64), c: (i64, i64)| (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+        let mut p = [(0i64, 0i64); clip::MAX_CLIPPED];
+        for (slot, &i) in p.iter_mut().zip(&idx) {
+            *slot = self.b.vertices.get(i as usize).map_or((0, 0), |v| (v.x as i64, v.y as i64));
+        }
+        let n = idx.len();
+        let total: i64 = (1..n.saturating_sub(1)).map(|k| cross(p[0], p[k], p[k + 1])).sum();
+        for k in 1..n.saturating_sub(1) {
+            let piece = cross(p[0], p[k], p[k + 1]);
+            if n > 3 && (piece > 0) != (total > 0) {
+                self.stats.degenerate += 1;
+                continue;
+            }
             self.emit([idx[0], idx[k], idx[k + 1]], face, cull)?;
         }
         Ok(())
