@@ -214,10 +214,13 @@ struct Plane<S> {
     dy: S,
     lo: S,
     hi: S,
-    /// The `f32` plane `(at_a, dx, dy)` if a gradient does not fit `S`
-    /// (fixed point, on slivers with a large range): then only the careful
-    /// path is used, and it evaluates span ends from this.
-    wide: Option<(f32, f32, f32)>,
+    /// The plane `(at_a, dx, dy)` in `f64` where stepping in `S` cannot be
+    /// trusted: a gradient that does not fit 16.16 (a sliver's depth), or a
+    /// triangle reaching far toward the guard band, whose gradients'
+    /// rounding, times millions of pixels from its top vertex, would be
+    /// far off on screen. Then only the careful path is used, and it
+    /// evaluates span ends from this.
+    wide: Option<(f64, f64, f64)>,
 }
 
 impl<S: Interp> Plane<S> {
@@ -226,14 +229,34 @@ impl<S: Interp> Plane<S> {
     #[inline(always)]
     fn new(shape: &Shape, va: f32, vb: f32, vc: f32, (lo, hi): (f32, f32)) -> Self {
         let (d1, d2) = (vb - va, vc - va);
+        if shape.far {
+            return Self::far(shape, va, d1, d2, lo, hi);
+        }
         let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
         let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
-        let (gx, gy) = (S::from_f32(dx), S::from_f32(dy));
         // 16.16 saturates gradients beyond ±32768 (a sliver's depth): a
         // bound check is two compares where a round trip costs four float
         // operations, in software on an M0+.
         let wide = S::WRAPS && !(dx.abs() < 32_000.0 && dy.abs() < 32_000.0);
-        Self { at_a: S::from_f32(va), dx: gx, dy: gy, lo: S::from_f32(lo), hi: S::from_f32(hi), wide: wide.then_some((va, dx, dy)) }
+        let at_a = S::from_f32(va);
+        let (lo, hi) = (S::from_f32(lo), S::from_f32(hi));
+        Self { at_a, dx: S::from_f32(dx), dy: S::from_f32(dy), lo, hi, wide: wide.then_some((va as f64, dx as f64, dy as f64)) }
+    }
+
+    /// [`Plane::new`] for a triangle reaching toward the guard band, in
+    /// `f64` from the exact integer offsets (in `f32` the products cancel
+    /// to noise and the offsets themselves lose bits). Rare, so the cost
+    /// of `f64` does not matter.
+    #[inline(never)]
+    fn far(shape: &Shape, va: f32, d1: f32, d2: f32, lo: f32, hi: f32) -> Self {
+        let (x1, y1, x2, y2) = (shape.ox1 as f64, shape.oy1 as f64, shape.ox2 as f64, shape.oy2 as f64);
+        let area = x1 * y2 - y1 * x2;
+        let (d1, d2) = (d1 as f64, d2 as f64);
+        // Offsets are in 2^-f pixels: gradients per pixel scale by 2^f.
+        let dx = (d1 * y2 - d2 * y1) / area * shape.per_pixel;
+        let dy = (d2 * x1 - d1 * x2) / area * shape.per_pixel;
+        let (lo, hi) = (S::from_f32(lo), S::from_f32(hi));
+        Self { at_a: S::from_f32(va), dx: S::from_f32(dx as f32), dy: S::from_f32(dy as f32), lo, hi, wide: Some((va as f64, dx, dy)) }
     }
 
     /// Value at an offset from the top vertex, in units of `2^-f` pixels.
@@ -258,8 +281,8 @@ impl<S: Interp> Plane<S> {
     fn clamped_span(&self, ox: i32, oy: i32, len: i32, f: u32) -> (S, S) {
         let at = |ox: i32| match self.wide {
             Some((v, dx, dy)) => {
-                let unit = 1.0 / (1u32 << f) as f32;
-                S::from_f32(v + dx * (ox as f32 * unit) + dy * (oy as f32 * unit)).clamp_to(self.lo, self.hi)
+                let unit = 1.0 / (1u32 << f) as f64;
+                S::from_f32((v + dx * (ox as f64 * unit) + dy * (oy as f64 * unit)) as f32).clamp_to(self.lo, self.hi)
             }
             None => S::plane_clamped(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi),
         };
@@ -286,6 +309,11 @@ struct Shape {
     oy1: i32,
     ox2: i32,
     oy2: i32,
+    /// Whether an offset exceeds 2^16 pixels: then gradients are computed
+    /// in `f64` (see [`Plane::new`]).
+    far: bool,
+    /// Units per pixel, `2^f`.
+    per_pixel: f64,
 }
 
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
@@ -342,7 +370,12 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     let (ox1, oy1, ox2, oy2) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
     let unit = 1.0 / (1u32 << f) as f32;
     let (x1, y1, x2, y2) = (ox1 as f32 * unit, oy1 as f32 * unit, ox2 as f32 * unit, oy2 as f32 * unit);
-    let shape = Shape { x1, y1, x2, y2, inv_area: 1.0 / (x1 * y2 - y1 * x2), ox1, oy1, ox2, oy2 };
+    // The area from the exact integer one: `x1 * y2 - y1 * x2` in f32
+    // cancels catastrophically for long slivers near the guard band (terms
+    // near 2^56 units², area near 2^35), which made gradients garbage.
+    let inv_area = 1.0 / (area as f32 * unit * unit);
+    let far = ox1.unsigned_abs().max(oy1.unsigned_abs()).max(ox2.unsigned_abs()).max(oy2.unsigned_abs()) >> f > 1 << 16;
+    let shape = Shape { x1, y1, x2, y2, inv_area, ox1, oy1, ox2, oy2, far, per_pixel: (1u32 << f) as f64 };
 
     let depth_range = (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE);
     let depth = |v: &ScreenVertex<V>| ((1.0 - v.z) * DEPTH_RANGE + 1.5) * S::DEPTH_SCALE;
@@ -385,14 +418,17 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     }
     // With a wrapping scalar, a plane whose rounded gradients leave its
     // range at a vertex takes the careful path (clamped span ends).
-    let careful = S::WRAPS && {
-        let mut ok = !(D::TEST || D::WRITE) || z.safe(&shape, f);
-        ok &= !P::CORRECT || q.safe(&shape, f);
-        for p in &vary[..n] {
-            ok &= p.safe(&shape, f);
-        }
-        !ok
-    };
+    // A triangle reaching far toward the guard band is evaluated in f64 per
+    // span whatever the scalar (see `Plane::far`).
+    let careful = shape.far
+        || S::WRAPS && {
+            let mut ok = !(D::TEST || D::WRITE) || z.safe(&shape, f);
+            ok &= !P::CORRECT || q.safe(&shape, f);
+            for p in &vary[..n] {
+                ok &= p.safe(&shape, f);
+            }
+            !ok
+        };
 
     // Stepping origin: the center of the strip's first row at the leftmost
     // on-screen column of the bounding box. A span's start values are the

@@ -158,3 +158,15 @@ fn a_triangle_at_1e300_covers_each_pixel_at_most_once() {
     let (counts, _) = raster::render_mode(&case);
     assert!(counts.iter().all(|&c| c <= 1), "fragments per pixel: {counts:?}");
 }
+
+/// Found by the `clip` fuzzer: near-plane clipping of a triangle in fixed
+/// point, 0 sub-pixel bits, made a sliver reaching 2^27 pixels off screen.
+/// Its gradients came from `f32` products that cancel (and offsets that
+/// lose bits in `f32`), and their 16.16 rounding times that distance put
+/// colors far off on screen: green 63 where the vertices allow at most 43.
+/// Fixed: such triangles get `f64` gradients and `f64` span ends.
+#[test]
+fn a_sliver_from_the_guard_band_keeps_colors_within_its_vertices() {
+    let input = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fuzz/clip/sliver-from-guard-band");
+    clip::run(&std::fs::read(input).expect("committed corpus file"));
+}
