@@ -214,13 +214,15 @@ struct Plane<S> {
     dy: S,
     lo: S,
     hi: S,
-    /// The plane `(at_a, dx, dy)` in `f64` where stepping in `S` cannot be
+    /// The plane `(at_a, dx, dy)` in `f32` where stepping in `S` cannot be
     /// trusted: a gradient that does not fit 16.16 (a sliver's depth), or a
     /// triangle reaching far toward the guard band, whose gradients'
     /// rounding, times millions of pixels from its top vertex, would be
     /// far off on screen. Then only the careful path is used, and it
-    /// evaluates span ends from this.
-    wide: Option<(f64, f64, f64)>,
+    /// evaluates span ends from this in `f64` (the gradients, rounded to
+    /// `f32` from their `f64` values, are then off by less than 0.4 of a
+    /// level at 2^27 pixels).
+    wide: Option<(f32, f32, f32)>,
 }
 
 impl<S: Interp> Plane<S> {
@@ -229,9 +231,6 @@ impl<S: Interp> Plane<S> {
     #[inline(always)]
     fn new(shape: &Shape, va: f32, vb: f32, vc: f32, (lo, hi): (f32, f32)) -> Self {
         let (d1, d2) = (vb - va, vc - va);
-        if shape.far {
-            return Self::far(shape, va, d1, d2, lo, hi);
-        }
         let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
         let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
         // 16.16 saturates gradients beyond ±32768 (a sliver's depth): a
@@ -240,23 +239,36 @@ impl<S: Interp> Plane<S> {
         let wide = S::WRAPS && !(dx.abs() < 32_000.0 && dy.abs() < 32_000.0);
         let at_a = S::from_f32(va);
         let (lo, hi) = (S::from_f32(lo), S::from_f32(hi));
-        Self { at_a, dx: S::from_f32(dx), dy: S::from_f32(dy), lo, hi, wide: wide.then_some((va as f64, dx as f64, dy as f64)) }
+        // Not `then_some`: its argument is built even when unused, and each
+        // conversion to f64 is a library call on an FPU without doubles.
+        let wide = if wide { Some((va, dx, dy)) } else { None };
+        Self { at_a, dx: S::from_f32(dx), dy: S::from_f32(dy), lo, hi, wide }
     }
 
     /// [`Plane::new`] for a triangle reaching toward the guard band, in
     /// `f64` from the exact integer offsets (in `f32` the products cancel
     /// to noise and the offsets themselves lose bits). Rare, so the cost
     /// of `f64` does not matter.
+    #[cold]
     #[inline(never)]
-    fn far(shape: &Shape, va: f32, d1: f32, d2: f32, lo: f32, hi: f32) -> Self {
+    fn far(shape: &Shape, va: f32, vb: f32, vc: f32, (lo, hi): (f32, f32)) -> Self {
+        let (d1, d2) = (vb - va, vc - va);
         let (x1, y1, x2, y2) = (shape.ox1 as f64, shape.oy1 as f64, shape.ox2 as f64, shape.oy2 as f64);
         let area = x1 * y2 - y1 * x2;
         let (d1, d2) = (d1 as f64, d2 as f64);
         // Offsets are in 2^-f pixels: gradients per pixel scale by 2^f.
-        let dx = (d1 * y2 - d2 * y1) / area * shape.per_pixel;
-        let dy = (d2 * x1 - d1 * x2) / area * shape.per_pixel;
+        let per_pixel = shape.per_pixel as f64;
+        let dx = (d1 * y2 - d2 * y1) / area * per_pixel;
+        let dy = (d2 * x1 - d1 * x2) / area * per_pixel;
         let (lo, hi) = (S::from_f32(lo), S::from_f32(hi));
-        Self { at_a: S::from_f32(va), dx: S::from_f32(dx as f32), dy: S::from_f32(dy as f32), lo, hi, wide: Some((va as f64, dx, dy)) }
+        Self {
+            at_a: S::from_f32(va),
+            dx: S::from_f32(dx as f32),
+            dy: S::from_f32(dy as f32),
+            lo,
+            hi,
+            wide: Some((va, dx as f32, dy as f32)),
+        }
     }
 
     /// Value at an offset from the top vertex, in units of `2^-f` pixels.
@@ -282,7 +294,7 @@ impl<S: Interp> Plane<S> {
         let at = |ox: i32| match self.wide {
             Some((v, dx, dy)) => {
                 let unit = 1.0 / (1u32 << f) as f64;
-                S::from_f32((v + dx * (ox as f64 * unit) + dy * (oy as f64 * unit)) as f32).clamp_to(self.lo, self.hi)
+                S::from_f32((v as f64 + dx as f64 * (ox as f64 * unit) + dy as f64 * (oy as f64 * unit)) as f32).clamp_to(self.lo, self.hi)
             }
             None => S::plane_clamped(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi),
         };
@@ -313,7 +325,7 @@ struct Shape {
     /// in `f64` (see [`Plane::new`]).
     far: bool,
     /// Units per pixel, `2^f`.
-    per_pixel: f64,
+    per_pixel: u32,
 }
 
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
@@ -373,13 +385,15 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     // The area from the exact integer one: `x1 * y2 - y1 * x2` in f32
     // cancels catastrophically for long slivers near the guard band (terms
     // near 2^56 units², area near 2^35), which made gradients garbage.
-    let inv_area = 1.0 / (area as f32 * unit * unit);
+    // In f32: exact enough on screen; triangles reaching toward the guard
+    // band, where it is not, take the f64 path (`Plane::far`).
+    let inv_area = 1.0 / (x1 * y2 - y1 * x2);
     let far = ox1.unsigned_abs().max(oy1.unsigned_abs()).max(ox2.unsigned_abs()).max(oy2.unsigned_abs()) >> f > 1 << 16;
-    let shape = Shape { x1, y1, x2, y2, inv_area, ox1, oy1, ox2, oy2, far, per_pixel: (1u32 << f) as f64 };
+    let shape = Shape { x1, y1, x2, y2, inv_area, ox1, oy1, ox2, oy2, far, per_pixel: 1 << f };
 
     let depth_range = (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE);
     let depth = |v: &ScreenVertex<V>| ((1.0 - v.z) * DEPTH_RANGE + 1.5) * S::DEPTH_SCALE;
-    let z = Plane::<S>::new(&shape, depth(a), depth(b), depth(c), depth_range);
+    let mut z = Plane::<S>::new(&shape, depth(a), depth(b), depth(c), depth_range);
     // Perspective-correct varyings are interpolated as value * q', with
     // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
     let (qa, qb, qc) = if P::CORRECT {
@@ -389,7 +403,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     } else {
         (1.0, 1.0, 1.0)
     };
-    let q = if P::CORRECT {
+    let mut q = if P::CORRECT {
         Plane::<S>::new(&shape, qa, qb, qc, (1.0 / 65536.0, 1.0))
     } else {
         let (one, zero) = (S::from_f32(1.0), S::default());
@@ -400,35 +414,59 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     let ranges = E::ranges::<C>();
     let periods = effect.periods();
     let mut bounds = [(S::default(), S::default()); MAX_VARYINGS];
-    for (i, p) in vary.iter_mut().enumerate().take(n) {
-        let (mut va, mut vb, mut vc) = (a.attrs[i], b.attrs[i], c.attrs[i]);
+    // The three vertex values of varying `i`: periodic ones (texture
+    // coordinates) shifted by whole periods to start near zero, so large
+    // coordinates keep their precision.
+    let values = |i: usize| {
+        let (va, vb, vc) = (a.attrs[i], b.attrs[i], c.attrs[i]);
         if periods[i] > 0.0 {
-            // Shift periodic values (texture coordinates) by whole periods
-            // to start near zero: large coordinates keep their precision.
-            let shift = floor(va.min(vb).min(vc) / periods[i]) * periods[i];
-            (va, vb, vc) = (va - shift, vb - shift, vc - shift);
+            let low = if vb < va { vb } else { va };
+            let low = if vc < low { vc } else { low };
+            let shift = floor(low / periods[i]) * periods[i];
+            (va - shift, vb - shift, vc - shift)
+        } else {
+            (va, vb, vc)
         }
+    };
+    for (i, p) in vary.iter_mut().enumerate().take(n) {
+        let (va, vb, vc) = values(i);
         *p = Plane::new(&shape, va * qa, vb * qb, vc * qc, ranges[i]);
-        // After a perspective division the value is clamped to the vertex
-        // values' range (within the effect's): rounding of the two planes
-        // must not push a constant channel off its value.
-        let lo = va.min(vb).min(vc).max(ranges[i].0);
-        let hi = va.max(vb).max(vc).min(ranges[i].1).max(lo);
-        bounds[i] = (S::from_f32(lo), S::from_f32(hi));
+        if P::CORRECT {
+            // After a perspective division the value is clamped to the
+            // vertex values' range (within the effect's): rounding of the
+            // two planes must not push a constant channel off its value.
+            // Plain compares: `f32::min` is a library call without an FPU
+            // min instruction (Cortex-M4F).
+            let (min, max) = (|a: f32, b: f32| if b < a { b } else { a }, |a: f32, b: f32| if b > a { b } else { a });
+            let lo = max(min(min(va, vb), vc), ranges[i].0);
+            let hi = max(min(max(max(va, vb), vc), ranges[i].1), lo);
+            bounds[i] = (S::from_f32(lo), S::from_f32(hi));
+        }
+    }
+    if shape.far {
+        // Rare: a triangle reaching toward the guard band gets its planes
+        // again in f64, and the careful path below (see `Plane::far`).
+        z = Plane::far(&shape, depth(a), depth(b), depth(c), depth_range);
+        if P::CORRECT {
+            q = Plane::far(&shape, qa, qb, qc, (1.0 / 65536.0, 1.0));
+        }
+        for (i, p) in vary.iter_mut().enumerate().take(n) {
+            let (va, vb, vc) = values(i);
+            *p = Plane::far(&shape, va * qa, vb * qb, vc * qc, ranges[i]);
+        }
     }
     // With a wrapping scalar, a plane whose rounded gradients leave its
     // range at a vertex takes the careful path (clamped span ends).
     // A triangle reaching far toward the guard band is evaluated in f64 per
     // span whatever the scalar (see `Plane::far`).
-    let careful = shape.far
-        || S::WRAPS && {
-            let mut ok = !(D::TEST || D::WRITE) || z.safe(&shape, f);
-            ok &= !P::CORRECT || q.safe(&shape, f);
-            for p in &vary[..n] {
-                ok &= p.safe(&shape, f);
-            }
-            !ok
-        };
+    let careful = (S::WRAPS || shape.far) && {
+        let mut ok = !(D::TEST || D::WRITE) || z.safe(&shape, f);
+        ok &= !P::CORRECT || q.safe(&shape, f);
+        for p in &vary[..n] {
+            ok &= p.safe(&shape, f);
+        }
+        !ok
+    };
 
     // Stepping origin: the center of the strip's first row at the leftmost
     // on-screen column of the bounding box. A span's start values are the
