@@ -570,6 +570,14 @@ where
     /// Snaps a convex window-space polygon (clipping it to the guard band
     /// if needed), stores its new vertices and queues it as a fan.
     fn emit_polygon(&mut self, mut poly: Polygon<WindowVertex<V>>, face: Rgb888, cull: Cull, perspective: bool) -> Result<(), DrawError> {
+        // A vertex whose projection overflowed (w tiny next to x or y, from
+        // a degenerate projection) has no place to clip from: the triangle
+        // is skipped and counted invalid, as for window coordinates beyond
+        // `WINDOW_LIMIT`.
+        if !poly.iter().all(|v| v.x.abs() <= WINDOW_LIMIT && v.y.abs() <= WINDOW_LIMIT) {
+            self.stats.invalid += 1;
+            return Ok(());
+        }
         let bits = S::SUBPIXEL_BITS;
         let fits = |v: &WindowVertex<V>| snap_f64(v.x, bits).is_some() && snap_f64(v.y, bits).is_some();
         if !poly.iter().all(fits) {

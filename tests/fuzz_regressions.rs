@@ -170,3 +170,13 @@ fn a_sliver_from_the_guard_band_keeps_colors_within_its_vertices() {
     let input = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fuzz/clip/sliver-from-guard-band");
     clip::run(&std::fs::read(input).expect("committed corpus file"));
 }
+
+/// Found by the `clip` fuzzer in CI: a degenerate projection gave a vertex
+/// with a tiny `w`, its window position overflowed to infinity, and the
+/// guard-band clip interpolated NaN colors from it, drawn as black. Fixed:
+/// such triangles are skipped and counted invalid.
+#[test]
+fn a_projection_that_overflows_skips_the_triangle() {
+    let input = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fuzz/clip/projection-overflow");
+    clip::run(&std::fs::read(input).expect("committed corpus file"));
+}
