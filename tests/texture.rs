@@ -11,37 +11,13 @@ use soft3d::host::Image;
 use soft3d::material::{Affine, PerPixel, PerSpan, Perspective};
 use soft3d::math::{Mat4, Vec2, Vec3};
 use soft3d::mesh::Mesh;
-use soft3d::texture::{Filter, Nearest, Repeat, Texture, Wrap};
+use soft3d::texture::{Nearest, Repeat, Texture};
 use soft3d::{Camera, Cull, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, Settings};
+
+mod common;
 
 const WHITE: u16 = 0xFFFF;
 const BLACK: u16 = 0x0000;
-
-/// A quad in the plane z = 0 covering `[-1, 1]²`, facing -z (the camera),
-/// with texture coordinates `uv0` at the top left to `uv1` at the bottom right.
-fn quad(uv0: (f32, f32), uv1: (f32, f32)) -> (Vec<Vec3>, Vec<Vec3>, Vec<Vec2>, Vec<u16>) {
-    let p = vec![Vec3::new(-1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, -1.0, 0.0)];
-    let n = vec![Vec3::new(0.0, 0.0, -1.0); 4];
-    let uv = vec![Vec2::new(uv0.0, uv0.1), Vec2::new(uv1.0, uv0.1), Vec2::new(uv1.0, uv1.1), Vec2::new(uv0.0, uv1.1)];
-    (p, n, uv, vec![0, 1, 2, 0, 2, 3])
-}
-
-/// Renders the quad filling a `size`×`size` image: an explicit
-/// view-projection maps its corners to the image corners with w = 1, so
-/// texel boundaries fall on known pixels.
-fn render_flat<S: Settings, F: Filter, W: Wrap>(texture: Texture<'_>, uv0: (f32, f32), uv1: (f32, f32), size: usize) -> Image<Rgb565> {
-    let (p, n, uv, idx) = quad(uv0, uv1);
-    let mesh = Mesh::new(&p, &n, &idx).unwrap().with_uvs(&uv).unwrap();
-    let material = Material::new(Textured::<F, W>::new(texture)).with_cull(Cull::None);
-    let mut r: HostRenderer<Rgb565, 5, S> = HostRenderer::new(size, size, 8, 16, 16, Rgb565::BLACK).unwrap();
-    // Clip space: x, y as they are, z = 0.5, w = 1.
-    let view_proj = Mat4 { m: [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.5], [0.0, 0.0, 0.0, 1.0]] };
-    let mut frame = r.begin_frame_with(view_proj, &Lights::UNLIT, Rgb565::BLACK);
-    frame.draw(&mesh, &Mat4::IDENTITY, &material).unwrap();
-    let mut img = Image::new(size as u32, size as u32, Rgb565::BLACK);
-    let Ok(_) = frame.finish(&mut img);
-    img
-}
 
 fn raw(c: Rgb565) -> u16 {
     embedded_graphics::pixelcolor::IntoStorage::into_storage(c)
@@ -63,9 +39,9 @@ fn nearest_texels_land_exactly_on_their_pixels() {
     let tex = Texture::new(&texels, 4, 4).unwrap();
     both_modes(|float| {
         let img = if float {
-            render_flat::<FloatingPoint, Nearest, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 32)
+            common::render_textured_quad::<FloatingPoint, Nearest, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 32)
         } else {
-            render_flat::<FixedPoint, Nearest, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 32)
+            common::render_textured_quad::<FixedPoint, Nearest, Repeat>(tex, (0.0, 0.0), (1.0, 1.0), 32)
         };
         // Each texel covers an 8×8 block; row 0 of the texture is at the top.
         for y in 0..32 {

@@ -2,12 +2,13 @@
 //! renderer on window-space triangles.
 #![allow(dead_code)]
 
-use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-use soft3d::effect::FragmentCount;
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use soft3d::effect::{FragmentCount, Textured};
 use soft3d::host::Image;
 use soft3d::material::DepthOff;
-use soft3d::math::{Fixed, Mat4};
+use soft3d::math::{Fixed, Mat4, Vec2, Vec3};
 use soft3d::mesh::Mesh;
+use soft3d::texture::{Filter, Texture, Wrap};
 use soft3d::tri::TriVertex;
 use soft3d::{Cull, FrameStats, HostRenderer, Lights, Material, Precision, Settings};
 
@@ -267,4 +268,53 @@ pub fn golden(name: &str, img: &Image<embedded_graphics::pixelcolor::Rgb565>) {
             out.display()
         );
     }
+}
+
+/// A point or vector in `f64`, for ray-cast references.
+pub type P3 = [f64; 3];
+
+/// `a - b`.
+pub fn sub(a: P3, b: P3) -> P3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// `a × b`.
+pub fn cross(a: P3, b: P3) -> P3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// `a · b`.
+pub fn dot(a: P3, b: P3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// A quad in the plane z = 0 covering `[-1, 1]²`, facing -z (the camera),
+/// with texture coordinates `uv0` at the top left to `uv1` at the bottom right.
+pub fn textured_quad(uv0: (f32, f32), uv1: (f32, f32)) -> (Vec<Vec3>, Vec<Vec3>, Vec<Vec2>, Vec<u16>) {
+    let p = vec![Vec3::new(-1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, -1.0, 0.0)];
+    let n = vec![Vec3::new(0.0, 0.0, -1.0); 4];
+    let uv = vec![Vec2::new(uv0.0, uv0.1), Vec2::new(uv1.0, uv0.1), Vec2::new(uv1.0, uv1.1), Vec2::new(uv0.0, uv1.1)];
+    (p, n, uv, vec![0, 1, 2, 0, 2, 3])
+}
+
+/// Renders the quad filling a `size`×`size` image: an explicit
+/// view-projection maps its corners to the image corners with w = 1, so
+/// texel boundaries fall on known pixels.
+pub fn render_textured_quad<S: Settings, F: Filter, W: Wrap>(
+    texture: Texture<'_>,
+    uv0: (f32, f32),
+    uv1: (f32, f32),
+    size: usize,
+) -> Image<Rgb565> {
+    let (p, n, uv, idx) = textured_quad(uv0, uv1);
+    let mesh = Mesh::new(&p, &n, &idx).unwrap().with_uvs(&uv).unwrap();
+    let material = Material::new(Textured::<F, W>::new(texture)).with_cull(Cull::None);
+    let mut r: HostRenderer<Rgb565, 5, S> = HostRenderer::new(size, size, 8, 16, 16, Rgb565::BLACK).unwrap();
+    // Clip space: x, y as they are, z = 0.5, w = 1.
+    let view_proj = Mat4 { m: [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.5], [0.0, 0.0, 0.0, 1.0]] };
+    let mut frame = r.begin_frame_with(view_proj, &Lights::UNLIT, Rgb565::BLACK);
+    frame.draw(&mesh, &Mat4::IDENTITY, &material).unwrap();
+    let mut img = Image::new(size as u32, size as u32, Rgb565::BLACK);
+    let Ok(_) = frame.finish(&mut img);
+    img
 }

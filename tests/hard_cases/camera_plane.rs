@@ -25,20 +25,8 @@ const FOV: f64 = 1.2;
 const NEAR: f32 = 0.1;
 const FAR: f32 = 100.0;
 
-type P3 = [f64; 3];
-
 fn view_proj() -> Mat4 {
     Mat4::perspective_fov_lh(FOV as f32, W as f32 / H as f32, NEAR, FAR)
-}
-
-fn sub(a: P3, b: P3) -> P3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn cross(a: P3, b: P3) -> P3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-fn dot(a: P3, b: P3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// Whether the ray from the eye through window point (sx, sy) meets

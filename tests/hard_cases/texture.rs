@@ -4,13 +4,9 @@
 //! pixels, so each case has an exact expected image.
 
 use super::depth::{all_modes, mode};
-use embedded_graphics::pixelcolor::{IntoStorage, Rgb565, RgbColor};
-use soft3d::effect::Textured;
-use soft3d::host::Image;
-use soft3d::math::{Mat4, Vec2, Vec3};
-use soft3d::mesh::Mesh;
+use embedded_graphics::pixelcolor::IntoStorage;
 use soft3d::texture::{Bilinear, Clamp, Filter, Nearest, Repeat, Texture, TextureError, Wrap};
-use soft3d::{Cull, HostRenderer, Lights, Material, Settings};
+use soft3d::Settings;
 
 const WHITE: u16 = 0xFFFF;
 const BLACK: u16 = 0x0000;
@@ -19,18 +15,7 @@ const BLACK: u16 = 0x0000;
 /// = model space, w = 1), with coordinates `uv0` at the top left and `uv1`
 /// at the bottom right, unlit.
 fn render<S: Settings, F: Filter, W: Wrap>(texture: Texture<'_>, uv0: (f32, f32), uv1: (f32, f32), size: usize) -> Vec<u16> {
-    let p = [Vec3::new(-1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, -1.0, 0.0)];
-    let n = [Vec3::new(0.0, 0.0, -1.0); 4];
-    let uv = [Vec2::new(uv0.0, uv0.1), Vec2::new(uv1.0, uv0.1), Vec2::new(uv1.0, uv1.1), Vec2::new(uv0.0, uv1.1)];
-    let i = [0u16, 1, 2, 0, 2, 3];
-    let mesh = Mesh::new(&p, &n, &i).unwrap().with_uvs(&uv).unwrap();
-    let material = Material::new(Textured::<F, W>::new(texture)).with_cull(Cull::None);
-    let mut r: HostRenderer<Rgb565, 5, S> = HostRenderer::new(size, size, 8, 16, 16, Rgb565::BLACK).unwrap();
-    let view_proj = Mat4 { m: [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.5], [0.0, 0.0, 0.0, 1.0]] };
-    let mut frame = r.begin_frame_with(view_proj, &Lights::UNLIT, Rgb565::BLACK);
-    frame.draw(&mesh, &Mat4::IDENTITY, &material).unwrap();
-    let mut img = Image::new(size as u32, size as u32, Rgb565::BLACK);
-    let Ok(_) = frame.finish(&mut img);
+    let img = crate::common::render_textured_quad::<S, F, W>(texture, uv0, uv1, size);
     img.pixels.iter().map(|c| c.into_storage()).collect()
 }
 

@@ -264,15 +264,15 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
         Some(q) => {
             let _ = writeln!(o, "/// Positions of mesh {name} in steps: `q as f32 * {id}_POSITION_SCALE[k] + {id}_POSITION_OFFSET[k]`.");
             let _ = writeln!(o, "pub static {id}_POSITIONS_I16: [[i16; 3]; {n}] = [");
-            packed(o, q.positions.iter().map(|v| format!("[{}, {}, {}]", v[0], v[1], v[2])));
+            packed(o, q.steps.positions.iter().map(|v| format!("[{}, {}, {}]", v[0], v[1], v[2])));
             let _ = writeln!(o, "];\n");
             let _ = writeln!(o, "/// Model units per position step, per axis.\n{ALLOW_FLOATS}");
-            let _ = writeln!(o, "pub const {id}_POSITION_SCALE: [f32; 3] = {};", floats(q.position_scale));
+            let _ = writeln!(o, "pub const {id}_POSITION_SCALE: [f32; 3] = {};", floats(q.steps.position_scale));
             let _ = writeln!(o, "/// The position offset (middle of the bounding box), per axis.\n{ALLOW_FLOATS}");
-            let _ = writeln!(o, "pub const {id}_POSITION_OFFSET: [f32; 3] = {};\n", floats(q.position_offset));
+            let _ = writeln!(o, "pub const {id}_POSITION_OFFSET: [f32; 3] = {};\n", floats(q.steps.position_offset));
             let _ = writeln!(o, "/// Normals of mesh {name} in steps of `{id}_NORMAL_SCALE`.");
             let _ = writeln!(o, "pub static {id}_NORMALS_I16: [[i16; 3]; {n}] = [");
-            packed(o, q.normals.iter().map(|v| format!("[{}, {}, {}]", v[0], v[1], v[2])));
+            packed(o, q.steps.normals.iter().map(|v| format!("[{}, {}, {}]", v[0], v[1], v[2])));
             let _ = writeln!(o, "];\n");
             let _ = writeln!(o, "/// Units per normal step (1/32767).\npub const {id}_NORMAL_SCALE: f32 = {};\n", float(NORMAL_SCALE));
         }

@@ -440,8 +440,8 @@ pub(crate) fn finish(mut baked: Baked, texture_dir: &Path) -> Result<Baked, Bake
     if baked.options.quantize == Quantize::I16 {
         for m in &mut baked.meshes {
             let q = quantize::quantize(&m.name, &m.positions, &m.normals)?;
-            m.positions = q.dequantized_positions();
-            m.normals = q.dequantized_normals();
+            m.positions = q.steps.dequantized_positions();
+            m.normals = q.steps.dequantized_normals();
             m.quantized = Some(q);
         }
     }

@@ -57,66 +57,24 @@ fn relative(e: f64, r: f64) -> f64 {
     }
 }
 
-/// A mesh's `i16` data.
+/// A mesh's `i16` data, quantized by the core, and the error it introduced.
 #[derive(Clone, Debug, PartialEq)]
 pub struct QuantizedMesh {
-    /// Positions in steps.
-    pub positions: Vec<[i16; 3]>,
-    /// Model units per step, per axis (0 for an axis of zero extent).
-    pub position_scale: [f32; 3],
-    /// The bounding box's middle, per axis.
-    pub position_offset: [f32; 3],
-    /// Normals in steps of [`NORMAL_SCALE`].
-    pub normals: Vec<[i16; 3]>,
+    /// The steps, scales and offsets (`soft3d::mesh::QuantizedMesh`).
+    pub steps: soft3d::mesh::QuantizedMesh,
     /// The error introduced.
     pub error: QuantizationError,
 }
 
-impl QuantizedMesh {
-    /// The dequantized positions.
-    pub fn dequantized_positions(&self) -> Vec<Vec3> {
-        let (s, o) = (self.position_scale, self.position_offset);
-        self.positions
-            .iter()
-            .map(|q| Vec3::new(dequantize(q[0], s[0], o[0]), dequantize(q[1], s[1], o[1]), dequantize(q[2], s[2], o[2])))
-            .collect()
-    }
-
-    /// The dequantized normals.
-    pub fn dequantized_normals(&self) -> Vec<Vec3> {
-        let d = |q: i16| dequantize(q, NORMAL_SCALE, 0.0);
-        self.normals.iter().map(|q| Vec3::new(d(q[0]), d(q[1]), d(q[2]))).collect()
-    }
-}
-
 /// Quantizes a mesh's positions and normals and measures the error.
 pub fn quantize(name: &str, positions: &[Vec3], normals: &[Vec3]) -> Result<QuantizedMesh, BakeError> {
-    let bad = |what: &str, i: usize| BakeError::Mesh {
-        name: name.to_string(),
-        problem: format!("{what} {i} is not finite and cannot be quantized to i16 (bake with f32)"),
-    };
-    if let Some(i) = positions.iter().position(|p| !p.is_finite()) {
-        return Err(bad("position", i));
-    }
-    if let Some(i) = normals.iter().position(|n| !n.is_finite()) {
-        return Err(bad("normal", i));
-    }
-
-    let core = soft3d::mesh::QuantizedMesh::new(positions, normals)
+    let steps = soft3d::mesh::QuantizedMesh::new(positions, normals)
         .map_err(|e| BakeError::Mesh { name: name.to_string(), problem: format!("{e} (bake with f32)") })?;
-    let scale = core.position_scale;
-    let mut q = QuantizedMesh {
-        positions: core.positions,
-        position_scale: core.position_scale,
-        position_offset: core.position_offset,
-        normals: core.normals,
-        error: Default::default(),
-    };
-
+    let scale = steps.position_scale;
     let radius = soft3d::mesh::Mesh::new(positions, normals, &[]).map(|m| m.bounds().radius as f64).unwrap_or(0.0);
     let mut e = QuantizationError { radius, ..Default::default() };
     let mut sum2 = 0.0;
-    for (p, d) in positions.iter().zip(q.dequantized_positions()) {
+    for (p, d) in positions.iter().zip(steps.dequantized_positions()) {
         let mut d2 = 0.0;
         for (k, s) in scale.iter().enumerate() {
             let diff = (component(d, k) as f64 - component(*p, k) as f64).abs();
@@ -131,11 +89,10 @@ pub fn quantize(name: &str, positions: &[Vec3], normals: &[Vec3]) -> Result<Quan
     if !positions.is_empty() {
         e.rms_position = (sum2 / positions.len() as f64).sqrt();
     }
-    for (n, d) in normals.iter().zip(q.dequantized_normals()) {
+    for (n, d) in normals.iter().zip(steps.dequantized_normals()) {
         e.max_normal_degrees = e.max_normal_degrees.max(angle_degrees(*n, d));
     }
-    q.error = e;
-    Ok(q)
+    Ok(QuantizedMesh { steps, error: e })
 }
 
 fn component(v: Vec3, k: usize) -> f32 {
@@ -167,15 +124,15 @@ mod tests {
         let p = [Vec3::new(-1.0, 0.0, 5.0), Vec3::new(3.0, 0.0, 5.0), Vec3::new(0.123, 0.0, 5.0)];
         let n = [Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.6, 0.8, 0.0)];
         let q = quantize("t", &p, &n).unwrap();
-        assert_eq!(q.positions[0][0], -32767);
-        assert_eq!(q.positions[1][0], 32767);
-        assert_eq!(q.position_offset, [1.0, 0.0, 5.0]);
-        assert_eq!(q.position_scale[1], 0.0); // flat axes dequantize to the offset exactly
-        let d = q.dequantized_positions();
+        assert_eq!(q.steps.positions[0][0], -32767);
+        assert_eq!(q.steps.positions[1][0], 32767);
+        assert_eq!(q.steps.position_offset, [1.0, 0.0, 5.0]);
+        assert_eq!(q.steps.position_scale[1], 0.0); // flat axes dequantize to the offset exactly
+        let d = q.steps.dequantized_positions();
         assert_eq!((d[0].y, d[0].z), (0.0, 5.0));
         assert!((d[0].x + 1.0).abs() < 1e-6, "{:?}", d[0]);
         assert!(q.error.max_axis_steps <= 0.5 + 1e-3, "{:?}", q.error);
-        assert_eq!(q.normals[0], [32767, 0, 0]);
+        assert_eq!(q.steps.normals[0], [32767, 0, 0]);
         assert!(q.error.max_normal_degrees < 0.01);
     }
 

@@ -111,8 +111,8 @@ fn i16_errors_are_within_half_a_step() {
         let baked = bake_asset(name, &options).unwrap();
         let (orig, m) = (&f32_bake.meshes[0], &baked.meshes[0]);
         let q = m.quantized.as_ref().expect("quantized");
-        let (s, o) = (q.position_scale, q.position_offset);
-        for (i, (p, qp)) in orig.positions.iter().zip(&q.positions).enumerate() {
+        let (s, o) = (q.steps.position_scale, q.steps.position_offset);
+        for (i, (p, qp)) in orig.positions.iter().zip(&q.steps.positions).enumerate() {
             let deq = [0, 1, 2].map(|k| dequantize(qp[k], s[k], o[k]));
             assert_eq!(bits3(&[m.positions[i]]), bits3(&[Vec3::new(deq[0], deq[1], deq[2])]), "{name}: Mesh built from dequantize()");
             for (k, (a, d)) in [p.x, p.y, p.z].into_iter().zip(deq).enumerate() {
@@ -121,7 +121,7 @@ fn i16_errors_are_within_half_a_step() {
                 assert!((a as f64 - d as f64).abs() <= bound, "{name} vertex {i} axis {k}: {a} vs {d}");
             }
         }
-        for (n, qn) in m.normals.iter().zip(&q.normals) {
+        for (n, qn) in m.normals.iter().zip(&q.steps.normals) {
             assert_eq!(n.x, dequantize(qn[0], NORMAL_SCALE, 0.0));
         }
         let e = q.error;

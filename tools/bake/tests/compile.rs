@@ -149,8 +149,8 @@ mod tests {
             let model = mesh.model.m.map(|r| r.map(f32::to_bits));
             let _ = writeln!(tests, "        assert_eq!(crate::{name}::{id}_MODEL.m.map(|r| r.map(f32::to_bits)), {model:?});");
             if let Some(q) = &mesh.quantized {
-                let _ = writeln!(tests, "        assert_eq!(crate::{name}::{id}_POSITIONS_I16, {:?});", q.positions);
-                let _ = writeln!(tests, "        assert_eq!(crate::{name}::{id}_NORMALS_I16, {:?});", q.normals);
+                let _ = writeln!(tests, "        assert_eq!(crate::{name}::{id}_POSITIONS_I16, {:?});", q.steps.positions);
+                let _ = writeln!(tests, "        assert_eq!(crate::{name}::{id}_NORMALS_I16, {:?});", q.steps.normals);
             }
         }
         for t in &b.textures {
