@@ -3,6 +3,8 @@
 
     scripts/qemu-profile.py MACHINE ELF [TOP]
     scripts/qemu-profile.py MACHINE ELF SYMBOL-SUBSTRING   # blocks of one function
+    scripts/qemu-profile.py MACHINE ELF --lines [TOP [SYMBOL-SUBSTRING]]  # per source line (innermost inlined frame)
+    scripts/qemu-profile.py MACHINE ELF --annotate SYMBOL-SUBSTRING       # disassembly with executions per instruction
 
 Runs ELF under qemu-system-arm -machine MACHINE (mps2-an386 or mps2-an385)
 with -d in_asm,exec,nochain, which logs every translated block (its
@@ -13,6 +15,10 @@ inlining: a function's count includes what was inlined into it).
 import collections, os, re, subprocess, sys, tempfile
 
 machine, elf = sys.argv[1], sys.argv[2]
+lines_mode = len(sys.argv) > 3 and sys.argv[3] == "--lines"
+annotate = len(sys.argv) > 3 and sys.argv[3] == "--annotate"
+if lines_mode or annotate:
+    del sys.argv[3]
 arg = sys.argv[3] if len(sys.argv) > 3 else "25"
 top = int(arg) if arg.isdigit() else None
 cpu = "cortex-m4" if machine == "mps2-an386" else "cortex-m3"
@@ -23,6 +29,7 @@ with tempfile.TemporaryDirectory() as d:
                     "-kernel", elf], check=True, stdout=subprocess.DEVNULL)
     size = {}
     name = {}
+    addrs = collections.defaultdict(list)
     counts = collections.Counter()
     cur, n = None, 0
     with open(log, errors="replace") as f:
@@ -36,12 +43,58 @@ with tempfile.TemporaryDirectory() as d:
                 if cur is None:
                     cur = int(m.group(1), 16)
                     name[cur] = sym
+                    addrs[cur] = []
                 n += 1
                 size[cur] = n
+                addrs[cur].append(int(m.group(1), 16))
                 continue
             m = re.match(r"^Trace \d+: \S+ \[[0-9a-f]+/([0-9a-f]+)/", line)
             if m:
                 counts[int(m.group(1), 16)] += 1
+    if annotate:
+        per_pc = collections.Counter()
+        for pc, c in counts.items():
+            if arg in name.get(pc, ""):
+                for a in addrs.get(pc, []):
+                    per_pc[a] += c
+        lo, hi = min(per_pc), max(per_pc) + 4
+        dis = subprocess.run(["llvm-objdump", "-d", "-l", "--no-show-raw-insn", f"--start-address={lo:#x}",
+                              f"--stop-address={hi:#x}", elf], capture_output=True, text=True).stdout
+        for line in dis.splitlines():
+            m = re.match(r"^\s*([0-9a-f]+):", line)
+            if m:
+                print(f"{per_pc.get(int(m.group(1), 16), 0):>8} {line}")
+            elif line.startswith(";"):
+                print("         " + re.sub(r"^; .*/(soft3d|main|library|registry/src/[^/]+)/", "; ", line))
+        sys.exit(0)
+    if lines_mode:
+        # Instructions executed per address, then per source line of the
+        # innermost (inlined) frame, by llvm-symbolizer from the debug info.
+        per_pc = collections.Counter()
+        only = sys.argv[4] if len(sys.argv) > 4 else ""
+        for pc, c in counts.items():
+            if only not in name.get(pc, ""):
+                continue
+            for a in addrs.get(pc, []):
+                per_pc[a] += c
+        pcs = sorted(per_pc)
+        out = subprocess.run(["llvm-symbolizer", "--obj", elf], input="\n".join(hex(a) for a in pcs),
+                             capture_output=True, text=True).stdout
+        blocks = out.strip().split("\n\n")
+        per_line = collections.Counter()
+        for a, b in zip(pcs, blocks):
+            ls = b.strip().split("\n")
+            loc = ls[1] if len(ls) > 1 else "?"
+            # Paths from this repository relative to it; others (core,
+            # dependencies) by crate directory.
+            loc = re.sub(r"^.*/(soft3d|main|qemu-bench)/", "", loc)
+            loc = re.sub(r"^.*/(library|registry/src/[^/]+)/", "", loc)
+            per_line[loc] += per_pc[a]
+        total = sum(per_line.values())
+        print(f"{total:>12,}  total")
+        for s_, c in per_line.most_common(top or 40):
+            print(f"{c:>12,}  {100 * c / total:5.1f}%  {s_}")
+        sys.exit(0)
     if top is None:
         # Per-block view of the functions whose name contains `arg`: address,
         # executions, instructions in the block, total.

@@ -118,17 +118,20 @@ fn floor_f32(v: f32) -> f32 {
 /// front face.
 #[inline]
 pub fn signed_area2<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c: &ScreenVertex<V>) -> i64 {
-    let (bx, by) = (b.x as i64 - a.x as i64, b.y as i64 - a.y as i64);
-    let (cx, cy) = (c.x as i64 - a.x as i64, c.y as i64 - a.y as i64);
-    bx * cy - by * cx
+    // Snapped coordinates are within ±2^28, so differences fit i32 and
+    // each product is one 32×32→64 multiply.
+    let (bx, by) = (b.x - a.x, b.y - a.y);
+    let (cx, cy) = (c.x - a.x, c.y - a.y);
+    bx as i64 * cy as i64 - by as i64 * cx as i64
 }
 
 /// First pixel row whose center is at or below snapped y.
 #[inline]
 pub fn first_row_at_or_below(y: i32, subpixel_bits: u32) -> i32 {
     let f = subpixel_bits + 1;
-    // ceil((y - half) / 2^F) as an arithmetic shift.
-    ((y as i64 - (1i64 << subpixel_bits) + (1i64 << f) - 1) >> f) as i32
+    // ceil((y - half) / 2^F) as an arithmetic shift; |y| <= 2^28 (the
+    // guard band), so the sum fits i32.
+    (y - (1 << subpixel_bits) + (1 << f) - 1) >> f
 }
 
 /// `ceil(m / d)` and `d * ceil(m / d) - m` (in `[0, d)`) for `d > 0`;
@@ -229,20 +232,21 @@ impl<S: Interp> Plane<S> {
     /// The plane through three vertex values, `d` being the triangle's
     /// shape relative to its top vertex (see [`Shape`]).
     #[inline(always)]
-    fn new(shape: &Shape, va: f32, vb: f32, vc: f32, (lo, hi): (f32, f32)) -> Self {
+    fn new(shape: &Shape, (va, vb, vc): (f32, f32, f32), (lo, hi): (f32, f32)) -> Self {
         let (d1, d2) = (vb - va, vc - va);
         let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
         let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
-        // 16.16 saturates gradients beyond ±32768 (a sliver's depth): a
-        // bound check is two compares where a round trip costs four float
-        // operations, in software on an M0+.
-        let wide = S::WRAPS && !(dx.abs() < 32_000.0 && dy.abs() < 32_000.0);
+        let (gx, gy) = (S::gradient(dx), S::gradient(dy));
+        // 16.16 saturates gradients beyond ±32768 (a sliver's depth):
+        // checked on the converted integers, two compares that cost no
+        // float operation (in software on an M0+).
+        let wide = gx.is_wide() | gy.is_wide();
         let at_a = S::from_f32(va);
         let (lo, hi) = (S::from_f32(lo), S::from_f32(hi));
         // Not `then_some`: its argument is built even when unused, and each
         // conversion to f64 is a library call on an FPU without doubles.
         let wide = if wide { Some((va, dx, dy)) } else { None };
-        Self { at_a, dx: S::from_f32(dx), dy: S::from_f32(dy), lo, hi, wide }
+        Self { at_a, dx: gx, dy: gy, lo, hi, wide }
     }
 
     /// [`Plane::new`] for a triangle reaching toward the guard band, in
@@ -251,7 +255,7 @@ impl<S: Interp> Plane<S> {
     /// of `f64` does not matter.
     #[cold]
     #[inline(never)]
-    fn far(shape: &Shape, va: f32, vb: f32, vc: f32, (lo, hi): (f32, f32)) -> Self {
+    fn far(shape: &Shape, (va, vb, vc): (f32, f32, f32), (lo, hi): (f32, f32)) -> Self {
         let (d1, d2) = (vb - va, vc - va);
         let (x1, y1, x2, y2) = (shape.ox1 as f64, shape.oy1 as f64, shape.ox2 as f64, shape.oy2 as f64);
         let area = x1 * y2 - y1 * x2;
@@ -283,7 +287,8 @@ impl<S: Interp> Plane<S> {
     #[inline(always)]
     fn safe(&self, shape: &Shape, f: u32) -> bool {
         let within = |ox, oy| S::plane_within(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi);
-        self.wide.is_none() && within(0, 0) && within(shape.ox1, shape.oy1) && within(shape.ox2, shape.oy2)
+        // `&`, not `&&`: straight-line code, no branch per test.
+        self.wide.is_none() & within(0, 0) & within(shape.ox1, shape.oy1) & within(shape.ox2, shape.oy2)
     }
 
     /// Start value and step of a span of `len` pixels whose first pixel
@@ -328,11 +333,48 @@ struct Shape {
     per_pixel: u32,
 }
 
+impl Shape {
+    /// The shape of a triangle relative to its top vertex `a`.
+    #[inline(always)]
+    fn new<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c: &ScreenVertex<V>, f: u32) -> Self {
+        // Snapped coordinates are within ±2^29, so their differences fit i32.
+        let (ox1, oy1, ox2, oy2) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+        let unit = 1.0 / (1u32 << f) as f32;
+        let (x1, y1, x2, y2) = (ox1 as f32 * unit, oy1 as f32 * unit, ox2 as f32 * unit, oy2 as f32 * unit);
+        // In f32 the area is exact enough on screen; for long slivers
+        // reaching toward the guard band `x1 * y2 - y1 * x2` cancels
+        // catastrophically (terms near 2^56 units², area near 2^35), and
+        // those take the f64 path (`Plane::far`).
+        let inv_area = 1.0 / (x1 * y2 - y1 * x2);
+        let far = ox1.unsigned_abs().max(oy1.unsigned_abs()).max(ox2.unsigned_abs()).max(oy2.unsigned_abs()) >> f > 1 << 16;
+        Shape { x1, y1, x2, y2, inv_area, ox1, oy1, ox2, oy2, far, per_pixel: 1 << f }
+    }
+}
+
+/// The three vertices of a triangle sorted by y (`a` top, `b` middle, `c`
+/// bottom) and the rows it covers.
+struct Sorted<'v, const V: usize> {
+    a: &'v ScreenVertex<V>,
+    b: &'v ScreenVertex<V>,
+    c: &'v ScreenVertex<V>,
+    /// Whether the middle vertex is left of the long edge `a`–`c`.
+    mid_left: bool,
+    /// First rows at or below each vertex.
+    y_top: i32,
+    y_mid: i32,
+    y_bot: i32,
+}
+
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
 /// `P` and depth mode `D`, stepping attributes in `S`.
 ///
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
+///
+/// Most triangles take the lean path here: planes set up in `f32`,
+/// converted to `S` once, stepped with additions. A triangle whose stepped
+/// values could leave their ranges (a wrapping scalar's rounding, or a
+/// triangle reaching toward the guard band) takes [`rasterize_careful`].
 #[inline(never)]
 pub fn rasterize<C, S, E, P, D, const V: usize>(
     target: &mut StripTarget<'_, C>,
@@ -364,167 +406,263 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     if area == 0 {
         return;
     }
-    // With y down, a negative area puts the middle vertex left of the long edge.
-    let mid_left = area < 0;
-
     let y_top = first_row_at_or_below(a.y, subpixel_bits);
-    let y_mid = first_row_at_or_below(b.y, subpixel_bits);
     let y_bot = first_row_at_or_below(c.y, subpixel_bits);
-    let y_start = y_top.max(target.y0);
-    let y_end = y_bot.min(target.y0 + target.rows);
-    if y_start >= y_end {
+    if y_top.max(target.y0) >= y_bot.min(target.y0 + target.rows) {
         return;
     }
-    let width = target.width as i32;
-
-    // Plane setup relative to the top vertex. Snapped coordinates are
-    // within ±2^29, so their differences fit i32.
-    let (ox1, oy1, ox2, oy2) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
-    let unit = 1.0 / (1u32 << f) as f32;
-    let (x1, y1, x2, y2) = (ox1 as f32 * unit, oy1 as f32 * unit, ox2 as f32 * unit, oy2 as f32 * unit);
-    // The area from the exact integer one: `x1 * y2 - y1 * x2` in f32
-    // cancels catastrophically for long slivers near the guard band (terms
-    // near 2^56 units², area near 2^35), which made gradients garbage.
-    // In f32: exact enough on screen; triangles reaching toward the guard
-    // band, where it is not, take the f64 path (`Plane::far`).
-    let inv_area = 1.0 / (x1 * y2 - y1 * x2);
-    let far = ox1.unsigned_abs().max(oy1.unsigned_abs()).max(ox2.unsigned_abs()).max(oy2.unsigned_abs()) >> f > 1 << 16;
-    let shape = Shape { x1, y1, x2, y2, inv_area, ox1, oy1, ox2, oy2, far, per_pixel: 1 << f };
-
-    let depth_range = (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE);
-    let depth = |v: &ScreenVertex<V>| ((1.0 - v.z) * DEPTH_RANGE + 1.5) * S::DEPTH_SCALE;
-    let mut z = Plane::<S>::new(&shape, depth(a), depth(b), depth(c), depth_range);
-    // Perspective-correct varyings are interpolated as value * q', with
-    // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
-    let (qa, qb, qc) = if P::CORRECT {
-        let qmax = a.q.max(b.q).max(c.q);
-        let k = if qmax > 0.0 { 1.0 / qmax } else { 1.0 };
-        (a.q * k, b.q * k, c.q * k)
-    } else {
-        (1.0, 1.0, 1.0)
-    };
-    let mut q = if P::CORRECT {
-        Plane::<S>::new(&shape, qa, qb, qc, (1.0 / 65536.0, 1.0))
-    } else {
-        let (one, zero) = (S::from_f32(1.0), S::default());
-        Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one, wide: None }
-    };
-    let n = E::VARYINGS.min(V);
-    let mut vary = [z; MAX_VARYINGS];
-    let ranges = E::ranges::<C>();
-    let periods = effect.periods();
-    let mut bounds = [(S::default(), S::default()); MAX_VARYINGS];
-    // The three vertex values of varying `i`: periodic ones (texture
-    // coordinates) shifted by whole periods to start near zero, so large
-    // coordinates keep their precision.
-    let values = |i: usize| {
-        let (va, vb, vc) = (a.attrs[i], b.attrs[i], c.attrs[i]);
-        if periods[i] > 0.0 {
-            let low = if vb < va { vb } else { va };
-            let low = if vc < low { vc } else { low };
-            let shift = floor(low / periods[i]) * periods[i];
-            (va - shift, vb - shift, vc - shift)
-        } else {
-            (va, vb, vc)
-        }
-    };
-    for (i, p) in vary.iter_mut().enumerate().take(n) {
-        let (va, vb, vc) = values(i);
-        *p = Plane::new(&shape, va * qa, vb * qb, vc * qc, ranges[i]);
-        if P::CORRECT {
-            // After a perspective division the value is clamped to the
-            // vertex values' range (within the effect's): rounding of the
-            // two planes must not push a constant channel off its value.
-            // Plain compares: `f32::min` is a library call without an FPU
-            // min instruction (Cortex-M4F).
-            let (min, max) = (|a: f32, b: f32| if b < a { b } else { a }, |a: f32, b: f32| if b > a { b } else { a });
-            let lo = max(min(min(va, vb), vc), ranges[i].0);
-            let hi = max(min(max(max(va, vb), vc), ranges[i].1), lo);
-            bounds[i] = (S::from_f32(lo), S::from_f32(hi));
-        }
-    }
-    if shape.far {
-        // Rare: a triangle reaching toward the guard band gets its planes
-        // again in f64, and the careful path below (see `Plane::far`).
-        z = Plane::far(&shape, depth(a), depth(b), depth(c), depth_range);
-        if P::CORRECT {
-            q = Plane::far(&shape, qa, qb, qc, (1.0 / 65536.0, 1.0));
-        }
-        for (i, p) in vary.iter_mut().enumerate().take(n) {
-            let (va, vb, vc) = values(i);
-            *p = Plane::far(&shape, va * qa, vb * qb, vc * qc, ranges[i]);
-        }
-    }
+    // With y down, a negative area puts the middle vertex left of the long edge.
+    let t = Sorted { a, b, c, mid_left: area < 0, y_top, y_mid: first_row_at_or_below(b.y, subpixel_bits), y_bot };
+    let shape = Shape::new(a, b, c, f);
+    let planes = Planes::<S, V>::new::<C, E, P>(&shape, &t, effect);
     // With a wrapping scalar, a plane whose rounded gradients leave its
-    // range at a vertex takes the careful path (clamped span ends).
-    // A triangle reaching far toward the guard band is evaluated in f64 per
+    // range at a vertex takes the careful path (clamped span ends), and a
+    // triangle reaching far toward the guard band is evaluated in f64 per
     // span whatever the scalar (see `Plane::far`).
-    let careful = (S::WRAPS || shape.far) && {
-        let mut ok = !(D::TEST || D::WRITE) || z.safe(&shape, f);
-        ok &= !P::CORRECT || q.safe(&shape, f);
-        for p in &vary[..n] {
-            ok &= p.safe(&shape, f);
-        }
-        !ok
-    };
+    let careful = shape.far || (S::WRAPS && !planes.safe::<E, P, D>(&shape, f));
+    if careful {
+        return rasterize_careful::<C, S, E, P, D, V>(target, effect, uniforms, &t, &shape, planes, face, f);
+    }
+    let n = E::VARYINGS.min(V);
+    let Planes { z, q, vary, bounds } = planes;
 
-    // Stepping origin: the center of the strip's first row at the leftmost
-    // on-screen column of the bounding box. A span's start values are the
-    // origin's plus whole steps right and down (exactly what stepping gives).
+    // Stepping origin: the center of the triangle's first row at the
+    // leftmost on-screen column of the bounding box. A span's start values
+    // are the origin's plus whole steps right and down (exactly what
+    // stepping gives). Rows count from the triangle's first row, not the
+    // strip's, so `f32` rounding is the same whatever the strip height.
+    let width = target.width as i32;
     let min_x = a.x.min(b.x).min(c.x);
     let x_base = (min_x >> f).clamp(0, width - 1);
-    // Rows count from the triangle's first row, not the strip's, so `f32`
-    // rounding is the same whatever the strip height.
     let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_top << f) + (1 << (f - 1)) - a.y);
     let z0 = z.at(ox, oy, f);
     let q0 = q.at(ox, oy, f);
     let mut v0 = [S::default(); MAX_VARYINGS];
     let mut v_dx = [S::default(); MAX_VARYINGS];
+    let mut v_dy = [S::default(); MAX_VARYINGS];
     for i in 0..n {
         v0[i] = vary[i].at(ox, oy, f);
         v_dx[i] = vary[i].dx;
+        v_dy[i] = vary[i].dy;
     }
+    walk_rows(target, &t, f, |target, y, x0, x1| {
+        let (color, depths) = target.span(y, x0, x1);
+        let (k, j) = (x0 - x_base, y - y_top);
+        let mut vals = [S::default(); MAX_VARYINGS];
+        for i in 0..n {
+            vals[i] = v0[i].add_mul(v_dy[i], j).add_mul(v_dx[i], k);
+        }
+        let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
+        let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
+        span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
+    });
+}
 
+/// [`rasterize`] for a triangle whose stepped values could leave their
+/// ranges: each span's ends are evaluated exactly (in `f64` for wide
+/// planes and far triangles), clamped into range, and interpolated
+/// between. Rare, so kept out of line.
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn rasterize_careful<C, S, E, P, D, const V: usize>(
+    target: &mut StripTarget<'_, C>,
+    effect: &E,
+    uniforms: &E::Uniforms<S>,
+    t: &Sorted<'_, V>,
+    shape: &Shape,
+    planes: Planes<S, V>,
+    face: C,
+    f: u32,
+) where
+    C: Color,
+    S: Interp,
+    E: Effect,
+    P: Perspective,
+    D: DepthMode,
+{
+    let n = E::VARYINGS.min(V);
+    let Planes { mut z, mut q, mut vary, bounds } = planes;
+    if shape.far {
+        // A triangle reaching toward the guard band gets its planes again
+        // in f64 (see `Plane::far`).
+        let values = VertexValues::<V>::new::<C, E, P, S>(t, effect);
+        z = Plane::far(shape, values.z, values.z_range);
+        if P::CORRECT {
+            q = Plane::far(shape, values.q, values.q_range);
+        }
+        for (i, p) in vary.iter_mut().enumerate().take(n) {
+            *p = Plane::far(shape, values.vary[i], values.ranges[i]);
+        }
+    }
+    let a = t.a;
+    walk_rows(target, t, f, |target, y, x0, x1| {
+        let (color, depths) = target.span(y, x0, x1);
+        let (px, py) = ((x0 << f) + (1 << (f - 1)) - a.x, (y << f) + (1 << (f - 1)) - a.y);
+        let len = x1 - x0;
+        let (zs, zd) = z.clamped_span(px, py, len, f);
+        let (qs, qd) = q.clamped_span(px, py, len, f);
+        let mut vals = [S::default(); MAX_VARYINGS];
+        let mut steps = [S::default(); MAX_VARYINGS];
+        for i in 0..n {
+            (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
+        }
+        span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
+    });
+}
+
+/// Walks a sorted triangle's rows within the strip with exact edge DDAs
+/// and calls `row(target, y, x0, x1)` for each non-empty span of pixels
+/// `x0..x1` (clipped to the strip's width).
+#[inline(always)]
+fn walk_rows<C, const V: usize>(
+    target: &mut StripTarget<'_, C>,
+    t: &Sorted<'_, V>,
+    f: u32,
+    mut row: impl FnMut(&mut StripTarget<'_, C>, i32, i32, i32),
+) {
+    let (a, b, c) = (t.a, t.b, t.c);
+    let y_start = t.y_top.max(target.y0);
+    let y_end = t.y_bot.min(target.y0 + target.rows);
+    let width = target.width as i32;
     let mut long = EdgeWalker::new(a.x, a.y, c.x, c.y, y_start, f);
     let mut short =
-        if y_start < y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y_start, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y_start, f) };
-
+        if y_start < t.y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y_start, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y_start, f) };
     for y in y_start..y_end {
-        if y == y_mid && y_mid > y_start {
+        if y == t.y_mid && t.y_mid > y_start {
             short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, f);
         }
-        let (left, right) = if mid_left { (&short, &long) } else { (&long, &short) };
+        let (left, right) = if t.mid_left { (&short, &long) } else { (&long, &short) };
         let x0 = left.bound.clamp(0, width);
         let x1 = right.bound.clamp(0, width);
         if x0 < x1 {
-            let row = (y - target.y0) as usize * target.width;
-            let (s0, s1) = (row + x0 as usize, row + x1 as usize);
-            target.dirty = (target.dirty.0.min(x0 as usize), target.dirty.1.max(x1 as usize));
-            let color = &mut target.color[s0..s1];
-            let depths = &mut target.depth[s0..s1];
-            let mut vals = [S::default(); MAX_VARYINGS];
-            if careful {
-                let (px, py) = ((x0 << f) + (1 << (f - 1)) - a.x, (y << f) + (1 << (f - 1)) - a.y);
-                let len = x1 - x0;
-                let (zs, zd) = z.clamped_span(px, py, len, f);
-                let (qs, qd) = q.clamped_span(px, py, len, f);
-                let mut steps = [S::default(); MAX_VARYINGS];
-                for i in 0..n {
-                    (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
-                }
-                span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
-            } else {
-                let (k, j) = (x0 - x_base, y - y_top);
-                for i in 0..n {
-                    vals[i] = v0[i].add_mul(vary[i].dy, j).add_mul(v_dx[i], k);
-                }
-                let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
-                let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
-                span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
-            }
+            row(target, y, x0, x1);
         }
         long.step();
         short.step();
+    }
+}
+
+impl<C> StripTarget<'_, C> {
+    /// The colors and depths of pixels `x0..x1` of frame row `y` (within
+    /// the strip), marked dirty.
+    #[inline(always)]
+    fn span(&mut self, y: i32, x0: i32, x1: i32) -> (&mut [C], &mut [u16]) {
+        let row = (y - self.y0) as usize * self.width;
+        let (s0, s1) = (row + x0 as usize, row + x1 as usize);
+        self.dirty = (self.dirty.0.min(x0 as usize), self.dirty.1.max(x1 as usize));
+        (&mut self.color[s0..s1], &mut self.depth[s0..s1])
+    }
+}
+
+/// A triangle's values at its three sorted vertices, as planes are set up
+/// from them, with the ranges they must stay in.
+struct VertexValues<const V: usize> {
+    z: (f32, f32, f32),
+    z_range: (f32, f32),
+    /// Normalized `1 / w` (`(1, 1, 1)` without perspective correction).
+    q: (f32, f32, f32),
+    q_range: (f32, f32),
+    /// Varyings, times `q` when perspective-correct.
+    vary: [(f32, f32, f32); V],
+    ranges: [(f32, f32); MAX_VARYINGS],
+    /// After a perspective division each varying is clamped to its
+    /// vertex values' range (within its own range).
+    bounds: [(f32, f32); V],
+}
+
+impl<const V: usize> VertexValues<V> {
+    #[inline(always)]
+    fn new<C: Color, E: Effect, P: Perspective, S: Interp>(t: &Sorted<'_, V>, effect: &E) -> Self {
+        let (a, b, c) = (t.a, t.b, t.c);
+        // Depth in stored units, times the scalar's depth scale.
+        let depth = |v: &ScreenVertex<V>| ((1.0 - v.z) * DEPTH_RANGE + 1.5) * S::DEPTH_SCALE;
+        // Perspective-correct varyings are interpolated as value * q', with
+        // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
+        let q = if P::CORRECT {
+            let qmax = a.q.max(b.q).max(c.q);
+            let k = if qmax > 0.0 { 1.0 / qmax } else { 1.0 };
+            (a.q * k, b.q * k, c.q * k)
+        } else {
+            (1.0, 1.0, 1.0)
+        };
+        let ranges = E::ranges::<C>();
+        let periods = effect.periods();
+        let mut vary = [(0.0, 0.0, 0.0); V];
+        let mut bounds = [(0.0, 0.0); V];
+        for i in 0..E::VARYINGS.min(V) {
+            let (mut va, mut vb, mut vc) = (a.attrs[i], b.attrs[i], c.attrs[i]);
+            // Periodic values (texture coordinates) are shifted by whole
+            // periods to start near zero, so large coordinates keep their
+            // precision.
+            if periods[i] > 0.0 {
+                let low = if vb < va { vb } else { va };
+                let low = if vc < low { vc } else { low };
+                let shift = floor(low / periods[i]) * periods[i];
+                (va, vb, vc) = (va - shift, vb - shift, vc - shift);
+            }
+            vary[i] = (va * q.0, vb * q.1, vc * q.2);
+            if P::CORRECT {
+                // Rounding of the two planes must not push a constant
+                // channel off its value. Plain compares: `f32::min` is a
+                // library call without an FPU min instruction (Cortex-M4F).
+                let (min, max) = (|a: f32, b: f32| if b < a { b } else { a }, |a: f32, b: f32| if b > a { b } else { a });
+                let lo = max(min(min(va, vb), vc), ranges[i].0);
+                let hi = max(min(max(max(va, vb), vc), ranges[i].1), lo);
+                bounds[i] = (lo, hi);
+            }
+        }
+        Self {
+            z: (depth(a), depth(b), depth(c)),
+            z_range: (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE),
+            q,
+            q_range: (1.0 / 65536.0, 1.0),
+            vary,
+            ranges,
+            bounds,
+        }
+    }
+}
+
+/// A triangle's planes in the stepping scalar.
+struct Planes<S, const V: usize> {
+    z: Plane<S>,
+    q: Plane<S>,
+    vary: [Plane<S>; V],
+    /// Per varying, the range a perspective-divided value is clamped to.
+    bounds: [(S, S); MAX_VARYINGS],
+}
+
+impl<S: Interp, const V: usize> Planes<S, V> {
+    #[inline(always)]
+    fn new<C: Color, E: Effect, P: Perspective>(shape: &Shape, t: &Sorted<'_, V>, effect: &E) -> Self {
+        let values = VertexValues::<V>::new::<C, E, P, S>(t, effect);
+        let z = Plane::new(shape, values.z, values.z_range);
+        let q = if P::CORRECT {
+            Plane::new(shape, values.q, values.q_range)
+        } else {
+            let (one, zero) = (S::from_f32(1.0), S::default());
+            Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one, wide: None }
+        };
+        let mut vary = [q; V];
+        let mut bounds = [(S::default(), S::default()); MAX_VARYINGS];
+        for i in 0..E::VARYINGS.min(V) {
+            vary[i] = Plane::new(shape, values.vary[i], values.ranges[i]);
+            bounds[i] = (S::from_f32(values.bounds[i].0), S::from_f32(values.bounds[i].1));
+        }
+        Self { z, q, vary, bounds }
+    }
+
+    /// Whether every plane the material uses stays within its range at
+    /// every pixel when stepped.
+    #[inline(always)]
+    fn safe<E: Effect, P: Perspective, D: DepthMode>(&self, shape: &Shape, f: u32) -> bool {
+        let mut ok = !(D::TEST || D::WRITE) || self.z.safe(shape, f);
+        ok &= !P::CORRECT || self.q.safe(shape, f);
+        for p in &self.vary[..E::VARYINGS.min(V)] {
+            ok &= p.safe(shape, f);
+        }
+        ok
     }
 }
 

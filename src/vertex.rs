@@ -70,8 +70,15 @@ impl<E: Effect> VertexStage<'_, E> {
     }
 
     /// Varyings of mesh vertex `i`.
-    #[inline]
+    #[inline(always)]
     pub fn varyings<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
+        self.varyings_at::<C, V>(mesh, i, mesh.position(i))
+    }
+
+    /// [`VertexStage::varyings`] of vertex `i` at model-space position
+    /// `p` (read once by the caller).
+    #[inline(always)]
+    fn varyings_at<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, p: Vec3) -> [f32; V] {
         if E::VARYINGS == 0 {
             return [0.0; V];
         }
@@ -82,10 +89,10 @@ impl<E: Effect> VertexStage<'_, E> {
             // used as it is; any other is normalized like the world path.
             let n = mesh.normal(i);
             let n = if mesh.unit_normals() { n } else { n.normalize_or_zero() };
-            (mesh.position(i), n)
+            (p, n)
         } else {
             let n = self.normal_matrix.transform(mesh.normal(i)).normalize_or_zero();
-            (self.model.transform_point3(mesh.position(i)), n)
+            (self.model.transform_point3(p), n)
         };
         let input = VertexInput {
             position,
@@ -98,17 +105,19 @@ impl<E: Effect> VertexStage<'_, E> {
 
     /// Transforms mesh vertex `i` into a stored vertex: projected and
     /// snapped if it is inside the near/far planes and the guard band,
-    /// otherwise flagged.
-    #[inline]
+    /// otherwise flagged. Inlined into the draw loop, where the viewport
+    /// and sub-pixel bits are constants.
+    #[inline(always)]
     pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        let clip = self.clip_position(mesh.position(i));
-        let attrs = self.varyings::<C, V>(mesh, i);
+        let p = mesh.position(i);
+        let clip = self.clip_position(p);
+        let attrs = self.varyings_at::<C, V>(mesh, i, p);
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }
 }
 
 /// Projects and snaps a clip-space vertex, or flags why it cannot be.
-#[inline]
+#[inline(always)]
 pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
     let c = v.pos;
     let mut flags = 0;

@@ -143,6 +143,7 @@ impl DrawTarget for TimedSink {
     type Color = Rgb565;
     type Error = core::convert::Infallible;
 
+    #[inline(never)]
     fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
         let t0 = cortex_m::peripheral::SYST::get_current();
         let r = self.inner.draw_iter(pixels);
@@ -150,6 +151,7 @@ impl DrawTarget for TimedSink {
         r
     }
 
+    #[inline(never)]
     fn fill_contiguous<I: IntoIterator<Item = Rgb565>>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error> {
         let t0 = cortex_m::peripheral::SYST::get_current();
         let r = self.inner.fill_contiguous(area, colors);
