@@ -121,7 +121,7 @@ pub trait Effect: Copy {
 
 /// The first `V` varyings `effect` computes for one vertex (the renderer
 /// stores `V` per vertex; `V >= E::VARYINGS` is checked at compile time).
-#[inline]
+#[inline(always)]
 pub(crate) fn vertex_varyings<C: Color, E: Effect, const V: usize>(effect: &E, input: &VertexInput, lights: &Lighting) -> [f32; V] {
     let mut out = [0.0; V];
     if E::VARYINGS > 0 {
@@ -172,6 +172,7 @@ impl Effect for Flat {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = true;
     const NAME: &'static str = "flat";
+    #[inline(always)]
     fn vertex<C: Color>(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
     }
@@ -195,6 +196,7 @@ impl Effect for Gouraud {
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
     const NAME: &'static str = "gouraud";
+    #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
         rgb_varyings::<C>(lit(lights.diffuse(v.position, v.normal), v.color))
     }
@@ -219,6 +221,7 @@ impl Effect for VertexColor {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
     const NAME: &'static str = "unlit";
+    #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         rgb_varyings::<C>([v.color.r() as f32, v.color.g() as f32, v.color.b() as f32])
     }
@@ -246,6 +249,7 @@ impl Effect for FragmentCount {
     const LIT_VERTICES: bool = false;
     const USES_FACE: bool = false;
     const NAME: &'static str = "count";
+    #[inline(always)]
     fn vertex<C: Color>(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
     }
@@ -346,6 +350,7 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
         p
     }
 
+    #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
         let l = lit(lights.diffuse(v.position, v.normal), v.color);
         let k = LIGHT_RANGE.1 / 255.0;
@@ -487,6 +492,7 @@ impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
         r
     }
 
+    #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         let n = v.normal.normalize_or_zero();
         let mut out = [0.0; MAX_VARYINGS];

@@ -621,7 +621,8 @@ where
     }
 
     /// Culls a snapped triangle (degenerate, back-facing, off screen) or
-    /// queues it.
+    /// queues it. Inlined into the draw loop, the hot path of geometry.
+    #[inline(always)]
     fn emit(&mut self, corners: Corners, face: Rgb888, cull: Cull) -> Result<(), DrawError> {
         let vs = &self.b.vertices;
         let [a, b, c] = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];

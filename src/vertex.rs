@@ -116,6 +116,19 @@ impl<E: Effect> VertexStage<'_, E> {
     }
 }
 
+/// Whether every value is finite, without a branch per value. With an
+/// FPU: `v * 0` is zero for a finite `v` and NaN otherwise, and NaN
+/// survives the sum (one multiply-add per value). Without: tests on the
+/// bits (a float operation would be a library call).
+#[inline(always)]
+fn all_finite(values: &[f32]) -> bool {
+    if crate::math::HARD_FLOAT {
+        values.iter().fold(0.0, |sum, v| sum + v * 0.0) == 0.0
+    } else {
+        values.iter().fold(true, |ok, v| ok & v.is_finite())
+    }
+}
+
 /// Projects and snaps a clip-space vertex, or flags why it cannot be.
 #[inline(always)]
 pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
@@ -123,7 +136,7 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
     let mut flags = 0;
     // A non-finite varying (a NaN texture coordinate) would be drawn as
     // garbage: the vertex is invalid like a non-finite position.
-    if !c.is_finite() || !v.attrs.iter().all(|a| a.is_finite()) {
+    if !all_finite(&[c.x, c.y, c.z, c.w]) || !all_finite(&v.attrs) {
         flags |= NOT_FINITE;
     } else {
         if c.z < 0.0 {

@@ -20,3 +20,9 @@ pub use fixed::Fixed;
 pub use interp::Interp;
 pub use matrix::{Mat3, Mat4};
 pub use vector::{Vec2, Vec3, Vec4};
+
+/// Whether `f32` arithmetic runs on a hardware FPU: everywhere but on Arm
+/// targets with the soft-float ABI (Cortex-M0+, M3), where every float
+/// operation is a library call. A few spots pick a different but
+/// equivalent formulation by it (a constant, so the other costs nothing).
+pub(crate) const HARD_FLOAT: bool = !cfg!(target_arch = "arm") || cfg!(target_abi = "eabihf");
