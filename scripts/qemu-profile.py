@@ -82,9 +82,15 @@ with tempfile.TemporaryDirectory() as d:
                              capture_output=True, text=True).stdout
         blocks = out.strip().split("\n\n")
         per_line = collections.Counter()
+        # QEMU_PROFILE_FILE=raster.rs attributes each instruction to the
+        # innermost inlined frame in that file instead (the caller's line).
+        in_file = os.environ.get("QEMU_PROFILE_FILE")
         for a, b in zip(pcs, blocks):
             ls = b.strip().split("\n")
-            loc = ls[1] if len(ls) > 1 else "?"
+            locs = ls[1::2]
+            loc = locs[0] if locs else "?"
+            if in_file:
+                loc = next((l for l in locs if in_file in l), loc)
             # Paths from this repository relative to it; others (core,
             # dependencies) by crate directory.
             loc = re.sub(r"^.*/(soft3d|main|qemu-bench)/", "", loc)

@@ -421,7 +421,9 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     // span whatever the scalar (see `Plane::far`).
     let careful = shape.far || (S::WRAPS && !planes.safe::<E, P, D>(&shape, f));
     if careful {
-        return rasterize_careful::<C, S, E, P, D, V>(target, effect, uniforms, &t, &shape, planes, face, f);
+        // The planes are set up again there: passing them would keep every
+        // plane's `f32` copy alive here, on the hot path, for the rare case.
+        return rasterize_careful::<C, S, E, P, D, V>(target, effect, uniforms, &t, face, f);
     }
     let n = E::VARYINGS.min(V);
     let Planes { z, q, vary, bounds } = planes;
@@ -470,8 +472,6 @@ fn rasterize_careful<C, S, E, P, D, const V: usize>(
     effect: &E,
     uniforms: &E::Uniforms<S>,
     t: &Sorted<'_, V>,
-    shape: &Shape,
-    planes: Planes<S, V>,
     face: C,
     f: u32,
 ) where
@@ -482,7 +482,8 @@ fn rasterize_careful<C, S, E, P, D, const V: usize>(
     D: DepthMode,
 {
     let n = E::VARYINGS.min(V);
-    let Planes { mut z, mut q, mut vary, bounds } = planes;
+    let shape = &Shape::new(t.a, t.b, t.c, f);
+    let Planes { mut z, mut q, mut vary, bounds } = Planes::<S, V>::new::<C, E, P>(shape, t, effect);
     if shape.far {
         // A triangle reaching toward the guard band gets its planes again
         // in f64 (see `Plane::far`).
@@ -657,12 +658,20 @@ impl<S: Interp, const V: usize> Planes<S, V> {
     /// every pixel when stepped.
     #[inline(always)]
     fn safe<E: Effect, P: Perspective, D: DepthMode>(&self, shape: &Shape, f: u32) -> bool {
-        let mut ok = !(D::TEST || D::WRITE) || self.z.safe(shape, f);
-        ok &= !P::CORRECT || self.q.safe(shape, f);
-        for p in &self.vary[..E::VARYINGS.min(V)] {
-            ok &= p.safe(shape, f);
+        // Early returns: each plane's evaluations are done when tested, not
+        // all first and kept (spilled) for a combined test.
+        if (D::TEST || D::WRITE) && !self.z.safe(shape, f) {
+            return false;
         }
-        ok
+        if P::CORRECT && !self.q.safe(shape, f) {
+            return false;
+        }
+        for p in &self.vary[..E::VARYINGS.min(V)] {
+            if !p.safe(shape, f) {
+                return false;
+            }
+        }
+        true
     }
 }
 
