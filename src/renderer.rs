@@ -133,7 +133,7 @@ pub struct FrameStats {
 pub trait MaterialProgram<C, S: Settings, const V: usize> {
     /// Rasterizes one triangle into a strip, lit by `lights` (the draw
     /// call's, for effects that light pixels).
-    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, lights: &Lighting);
+    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting);
 }
 
 impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
@@ -144,8 +144,10 @@ where
     P: Perspective,
     D: DepthMode,
 {
-    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: C, lights: &Lighting) {
+    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting) {
         let uniforms = self.effect.uniforms::<S::Interp>(lights, self.color);
+        // Converted only for effects that use it.
+        let face = if E::USES_FACE { C::from(face) } else { C::BLACK };
         raster::rasterize::<C, S::Interp, E, P, D, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS)
     }
 }
@@ -708,7 +710,7 @@ where
                 let vs = &b.vertices;
                 let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
                 let (program, _, lights) = &draws[draw];
-                program.rasterize(&mut strip, tri, C::from(Rgb888::new(rec.face[0], rec.face[1], rec.face[2])), lights);
+                program.rasterize(&mut strip, tri, Rgb888::new(rec.face[0], rec.face[1], rec.face[2]), lights);
                 let bottom = tri[0].y.max(tri[1].y).max(tri[2].y);
                 if first_row_at_or_below(bottom, bits) > (y0 + rows) as i32 {
                     tris[i as usize].next = NONE;
