@@ -25,6 +25,8 @@ pub mod crate_scene {
     include!("crate_scene.rs");
 }
 
+pub mod study;
+
 static TORUS_DATA: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
 static SPHERE_DATA: MeshData<{ sphere_vertex_count(24, 16) }, { sphere_index_count(24, 16) }> = MeshData::uv_sphere(24, 16, 0.8);
 static CUBE_DATA: MeshData<24, 36> = MeshData::cube(1.2);

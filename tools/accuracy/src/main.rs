@@ -1,0 +1,261 @@
+//! The accuracy study: every precision choice of soft3d rendered against
+//! an exact `f64` reference, with its measured cost, written to
+//! `docs/accuracy.md`.
+//!
+//! ```sh
+//! bash scripts/accuracy.sh            # everything: emulator figures, then this tool
+//! cargo run --release --manifest-path tools/accuracy/Cargo.toml -- [--quick] [--check] [--assets DIR] [--out DIR] [--target CSV]
+//! ```
+//!
+//! `--quick` renders only the built-in scenes; `--check` writes nothing
+//! and fails if `docs/accuracy.md` differs from what it would write.
+
+mod metrics;
+mod reference;
+mod render;
+mod report;
+mod scenes;
+
+use metrics::Errors;
+use reference::{RefFilter, RefImage, RefShading};
+use render::CoreImages;
+use scenes::Scene;
+use soft3d::material::{Affine, PerPixel, PerSpan};
+use soft3d::math::Fixed;
+use soft3d::texture::{Bilinear, Nearest};
+use soft3d::Precision;
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// One combination of the precision choices.
+#[derive(Clone, Copy)]
+pub struct Config {
+    /// Stable key, joined with the emulator's figures.
+    pub key: &'static str,
+    /// Interpolation scalar.
+    pub interp: &'static str,
+    /// Sub-pixel bits.
+    pub bits: u32,
+    /// Perspective mode.
+    pub perspective: &'static str,
+    /// Texture filter.
+    pub filter: RefFilter,
+    /// Per-pixel lighting for untextured objects.
+    pub phong: bool,
+    render: fn(&Scene, bool) -> CoreImages,
+}
+
+macro_rules! config {
+    ($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $filter:ident, $phong:literal) => {
+        Config {
+            key: $key,
+            interp: $interp,
+            bits: $bits,
+            perspective: $persp,
+            filter: RefFilter::$filter,
+            phong: $phong,
+            render: render::render::<Precision<$scalar, $bits>, $p, $filter>,
+        }
+    };
+}
+
+/// Every configuration the study renders. The baseline is the first: the
+/// crate's `FixedPoint` (16.16, 4 sub-pixel bits), exact perspective every
+/// 16 pixels, nearest texels, Gouraud.
+pub const CONFIGS: &[Config] = &[
+    config!("fixed-4-span16-nearest-gouraud", "fixed 16.16", Fixed, 4, "every 16 px", PerSpan<16>, Nearest, false),
+    config!("f32-4-span16-nearest-gouraud", "f32", f32, 4, "every 16 px", PerSpan<16>, Nearest, false),
+    config!("fixed-0-span16-nearest-gouraud", "fixed 16.16", Fixed, 0, "every 16 px", PerSpan<16>, Nearest, false),
+    config!("fixed-2-span16-nearest-gouraud", "fixed 16.16", Fixed, 2, "every 16 px", PerSpan<16>, Nearest, false),
+    config!("fixed-6-span16-nearest-gouraud", "fixed 16.16", Fixed, 6, "every 16 px", PerSpan<16>, Nearest, false),
+    config!("fixed-8-span16-nearest-gouraud", "fixed 16.16", Fixed, 8, "every 16 px", PerSpan<16>, Nearest, false),
+    config!("fixed-4-affine-nearest-gouraud", "fixed 16.16", Fixed, 4, "affine", Affine, Nearest, false),
+    config!("fixed-4-span8-nearest-gouraud", "fixed 16.16", Fixed, 4, "every 8 px", PerSpan<8>, Nearest, false),
+    config!("fixed-4-span32-nearest-gouraud", "fixed 16.16", Fixed, 4, "every 32 px", PerSpan<32>, Nearest, false),
+    config!("fixed-4-exact-nearest-gouraud", "fixed 16.16", Fixed, 4, "every pixel", PerPixel, Nearest, false),
+    config!("fixed-4-span16-bilinear-gouraud", "fixed 16.16", Fixed, 4, "every 16 px", PerSpan<16>, Bilinear, false),
+    config!("fixed-4-span16-nearest-phong", "fixed 16.16", Fixed, 4, "every 16 px", PerSpan<16>, Nearest, true),
+    config!("f32-4-affine-nearest-gouraud", "f32", f32, 4, "affine", Affine, Nearest, false),
+    config!("f32-8-exact-bilinear-phong", "f32", f32, 8, "every pixel", PerPixel, Bilinear, true),
+    config!("fixed-4-affine-nearest-phong", "fixed 16.16", Fixed, 4, "affine", Affine, Nearest, true),
+    config!("fixed-8-exact-bilinear-gouraud", "fixed 16.16", Fixed, 8, "every pixel", PerPixel, Bilinear, false),
+];
+
+/// A question the study answers: one choice, its options (keys into
+/// [`CONFIGS`]), each differing from the baseline in that choice only.
+pub struct Choice {
+    /// Title.
+    pub name: &'static str,
+    /// Which scenes show it (others do not change).
+    pub scenes: &'static [&'static str],
+    /// Option label and configuration key.
+    pub options: &'static [(&'static str, &'static str)],
+    /// Whether the options change the shading model (then errors are also
+    /// given against the ideal: per-pixel lighting, bilinear texels).
+    pub model: bool,
+}
+
+/// The choices, each alone against the baseline, then combinations.
+pub const CHOICES: &[Choice] = &[
+    Choice {
+        name: "Interpolation scalar",
+        scenes: &["torus", "monkey", "floor", "zfight"],
+        options: &[("fixed 16.16", "fixed-4-span16-nearest-gouraud"), ("f32", "f32-4-span16-nearest-gouraud")],
+        model: false,
+    },
+    Choice {
+        name: "Sub-pixel bits",
+        scenes: &["torus", "monkey", "floor", "zfight"],
+        options: &[
+            ("0", "fixed-0-span16-nearest-gouraud"),
+            ("2", "fixed-2-span16-nearest-gouraud"),
+            ("4", "fixed-4-span16-nearest-gouraud"),
+            ("6", "fixed-6-span16-nearest-gouraud"),
+            ("8", "fixed-8-span16-nearest-gouraud"),
+        ],
+        model: false,
+    },
+    Choice {
+        name: "Perspective correction",
+        scenes: &["torus", "monkey", "floor", "zfight"],
+        options: &[
+            ("affine", "fixed-4-affine-nearest-gouraud"),
+            ("every 32 px", "fixed-4-span32-nearest-gouraud"),
+            ("every 16 px", "fixed-4-span16-nearest-gouraud"),
+            ("every 8 px", "fixed-4-span8-nearest-gouraud"),
+            ("every pixel", "fixed-4-exact-nearest-gouraud"),
+        ],
+        model: false,
+    },
+    Choice {
+        name: "Texture filter",
+        scenes: &["monkey", "floor"],
+        options: &[("nearest", "fixed-4-span16-nearest-gouraud"), ("bilinear", "fixed-4-span16-bilinear-gouraud")],
+        model: true,
+    },
+    Choice {
+        name: "Lighting",
+        scenes: &["torus", "zfight"],
+        options: &[("Gouraud (per vertex)", "fixed-4-span16-nearest-gouraud"), ("Phong (per pixel)", "fixed-4-span16-nearest-phong")],
+        model: true,
+    },
+    Choice {
+        name: "Combinations",
+        scenes: &["torus", "monkey", "floor", "zfight"],
+        options: &[
+            ("cheapest: fixed, 4 bits, affine, nearest, Gouraud", "fixed-4-affine-nearest-gouraud"),
+            ("f32, 4 bits, affine, nearest, Gouraud", "f32-4-affine-nearest-gouraud"),
+            ("baseline: fixed, 4 bits, every 16 px, nearest, Gouraud", "fixed-4-span16-nearest-gouraud"),
+            ("fixed, 8 bits, every pixel, bilinear, Gouraud", "fixed-8-exact-bilinear-gouraud"),
+            ("fixed, 4 bits, affine, nearest, Phong", "fixed-4-affine-nearest-phong"),
+            ("best: f32, 8 bits, every pixel, bilinear, Phong", "f32-8-exact-bilinear-phong"),
+        ],
+        model: true,
+    },
+];
+
+/// Results: per configuration key and scene, the errors against the
+/// reference of the same shading model and against the ideal.
+pub struct Results {
+    /// `(key, scene) -> (same model, ideal)`.
+    pub errors: BTreeMap<(&'static str, &'static str), (Errors, Errors)>,
+    /// Scene names and descriptions, in order.
+    pub scenes: Vec<(&'static str, &'static str)>,
+    /// Notes (skipped scenes).
+    pub notes: Vec<String>,
+}
+
+struct Args {
+    quick: bool,
+    check: bool,
+    assets: PathBuf,
+    out: PathBuf,
+    target: PathBuf,
+}
+
+fn parse_args() -> Result<Args, String> {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut a = Args {
+        quick: false,
+        check: false,
+        assets: root.join("../shared/assets"),
+        out: root.join("docs"),
+        target: root.join("docs/accuracy/target.csv"),
+    };
+    let mut it = std::env::args().skip(1);
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| it.next().ok_or_else(|| format!("{name} needs a value"));
+        match arg.as_str() {
+            "--quick" => a.quick = true,
+            "--check" => a.check = true,
+            "--assets" => a.assets = PathBuf::from(value("--assets")?),
+            "--out" => a.out = PathBuf::from(value("--out")?),
+            "--target" => a.target = PathBuf::from(value("--target")?),
+            other => return Err(format!("unknown option {other}")),
+        }
+    }
+    Ok(a)
+}
+
+fn main() -> ExitCode {
+    let args = match parse_args() {
+        Ok(a) => a,
+        Err(e) => {
+            eprintln!("accuracy: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let mut notes = Vec::new();
+    let mut scenes = scenes::all(&args.assets, &mut notes);
+    if args.quick {
+        scenes.retain(|s| s.name == "floor" || s.name == "zfight");
+        notes.push("quick mode: built-in scenes only".into());
+    }
+    for n in &notes {
+        eprintln!("{n}");
+    }
+    let mut errors = BTreeMap::new();
+    let mut images: BTreeMap<(&'static str, &'static str), CoreImages> = BTreeMap::new();
+    let mut references: BTreeMap<&'static str, BTreeMap<(bool, bool), RefImage>> = BTreeMap::new();
+    for scene in &scenes {
+        let r = scene.reference();
+        let refs = references.entry(scene.name).or_default();
+        for phong in [false, true] {
+            for bilinear in [false, true] {
+                let shading = if phong { RefShading::Phong } else { RefShading::Gouraud };
+                let filter = if bilinear { RefFilter::Bilinear } else { RefFilter::Nearest };
+                refs.insert((phong, bilinear), r.render(shading, filter));
+            }
+        }
+        let wrap = scene.textures.iter().map(|t| (t.width as f64, t.height as f64)).next();
+        for c in CONFIGS {
+            let img = (c.render)(scene, c.phong);
+            let same = &refs[&(c.phong, c.filter == RefFilter::Bilinear)];
+            let ideal = &refs[&(true, true)];
+            errors.insert((c.key, scene.name), (metrics::compare(&img, same, wrap), metrics::compare(&img, ideal, wrap)));
+            images.insert((c.key, scene.name), img);
+        }
+        eprintln!("{}: {} configurations", scene.name, CONFIGS.len());
+    }
+    let results = Results { errors, scenes: scenes.iter().map(|s| (s.name, s.about)).collect(), notes };
+    let target = report::read_target(&args.target);
+    let doc = report::markdown(&results, &target, args.quick);
+    let path = args.out.join("accuracy.md");
+    if args.check {
+        let old = std::fs::read_to_string(&path).unwrap_or_default();
+        let names: Vec<&str> = results.scenes.iter().map(|s| s.0).collect();
+        if report::tables(&old, &names) != report::tables(&doc, &names) {
+            eprintln!("accuracy: {} is not current; run bash scripts/accuracy.sh", path.display());
+            return ExitCode::FAILURE;
+        }
+        eprintln!("accuracy: {} is current", path.display());
+        return ExitCode::SUCCESS;
+    }
+    if let Err(e) = report::write_all(&args.out, &doc, &results, &target, &images, &references) {
+        eprintln!("accuracy: {e}");
+        return ExitCode::FAILURE;
+    }
+    eprintln!("accuracy: wrote {}", path.display());
+    ExitCode::SUCCESS
+}

@@ -1,0 +1,379 @@
+//! `docs/accuracy.md` and its figures.
+
+use crate::metrics::Errors;
+use crate::reference::RefImage;
+use crate::render::CoreImages;
+use crate::scenes::{HEIGHT, WIDTH};
+use crate::{Results, CHOICES, CONFIGS};
+use embedded_graphics::mono_font::{ascii::FONT_6X10, MonoTextStyle};
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use embedded_graphics::prelude::*;
+use embedded_graphics::text::Text;
+use soft3d::host::Image;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Emulator figures: `(key, scene, core) -> instructions per frame`.
+pub type Target = BTreeMap<(String, String, String), u64>;
+
+/// Reads `key,scene,core,instructions` rows (missing file: no figures).
+pub fn read_target(path: &Path) -> Target {
+    let mut t = Target::new();
+    let Ok(text) = std::fs::read_to_string(path) else { return t };
+    for line in text.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        if let [key, scene, core, n] = f[..] {
+            if let Ok(n) = n.trim().parse() {
+                t.insert((key.into(), scene.into(), core.into()), n);
+            }
+        }
+    }
+    t
+}
+
+/// Mean instructions per frame of a configuration over `scenes` on `core`,
+/// if every one was measured.
+fn time(target: &Target, key: &str, scenes: &[&str], core: &str) -> Option<f64> {
+    let v: Option<Vec<u64>> = scenes.iter().map(|s| target.get(&(key.to_string(), s.to_string(), core.to_string())).copied()).collect();
+    v.filter(|v| !v.is_empty()).map(|v| v.iter().sum::<u64>() as f64 / v.len() as f64)
+}
+
+fn thousands(v: f64) -> String {
+    let s = format!("{}", v.round() as u64);
+    let mut out = String::new();
+    for (i, c) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+fn psnr(v: f64) -> String {
+    if v.is_infinite() {
+        "∞".into()
+    } else {
+        format!("{v:.1}")
+    }
+}
+
+/// The errors of `key` over `scenes` combined: mean PSNR (identical
+/// images counted as 99 dB), worst max and p99, summed pixel counts.
+fn combined(results: &Results, key: &str, scenes: &[&str], ideal: bool) -> Option<Errors> {
+    let all: Vec<Errors> =
+        scenes.iter().filter_map(|s| results.errors.get(&(key, *s)).map(|e| if ideal { e.1 } else { e.0 })).collect::<Vec<_>>();
+    // Keys are 'static in the map; look them up by value.
+    let all = if all.is_empty() {
+        results.errors.iter().filter(|((k, s), _)| *k == key && scenes.contains(s)).map(|(_, e)| if ideal { e.1 } else { e.0 }).collect()
+    } else {
+        all
+    };
+    if all.is_empty() {
+        return None;
+    }
+    let n = all.len() as f64;
+    let max_opt = |f: fn(&Errors) -> Option<f64>| all.iter().filter_map(f).fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+    Some(Errors {
+        psnr: all.iter().map(|e| e.psnr.min(99.0)).sum::<f64>() / n,
+        max: all.iter().map(|e| e.max).max().unwrap_or(0),
+        p99: all.iter().map(|e| e.p99).max().unwrap_or(0),
+        mean: all.iter().map(|e| e.mean).sum::<f64>() / n,
+        coverage: all.iter().map(|e| e.coverage).sum(),
+        depth: all.iter().map(|e| e.depth).sum(),
+        uv_max: max_opt(|e| e.uv_max),
+        uv_p99: max_opt(|e| e.uv_p99),
+        pixels: all.iter().map(|e| e.pixels).sum(),
+    })
+}
+
+fn uv(v: Option<f64>) -> String {
+    v.map_or("–".into(), |v| format!("{v:.3}"))
+}
+
+fn row(label: &str, e: &Errors, ideal: Option<&Errors>, m4f: Option<f64>, m0: Option<f64>) -> String {
+    let t = |v: Option<f64>| v.map_or("not measured".into(), thousands);
+    let ideal = ideal.map_or(String::new(), |i| format!(" {} / {:.2} |", psnr(i.psnr), i.mean));
+    format!(
+        "| {label} | {} / {:.2} |{ideal} {} / {} | {} | {} | {} | {} | {} |\n",
+        psnr(e.psnr),
+        e.mean,
+        e.max,
+        e.p99,
+        e.coverage,
+        e.depth,
+        uv(e.uv_p99),
+        t(m4f),
+        t(m0)
+    )
+}
+
+/// Start and end markers of the per-scene tables that `--check` compares.
+const SCENE_BEGIN: &str = "<!-- scene:";
+const SCENE_END: &str = "<!-- end scene -->";
+
+/// The per-scene tables of a document whose scene is in `scenes` (all
+/// when empty): what `--check` compares (they depend on nothing but the
+/// code and the committed emulator figures).
+pub fn tables(doc: &str, scenes: &[&str]) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = doc;
+    while let Some(i) = rest.find(SCENE_BEGIN) {
+        let tail = &rest[i..];
+        let end = tail.find(SCENE_END).map_or(tail.len(), |e| e + SCENE_END.len());
+        let name = tail[SCENE_BEGIN.len()..].split_whitespace().next().unwrap_or("");
+        if scenes.is_empty() || scenes.contains(&name) {
+            out.push(tail[..end].to_string());
+        }
+        rest = &tail[end..];
+    }
+    out
+}
+
+/// The document.
+pub fn markdown(results: &Results, target: &Target, quick: bool) -> String {
+    let mut d = String::new();
+    let scene_names: Vec<&str> = results.scenes.iter().map(|s| s.0).collect();
+    let _ = writeln!(d, "# What accuracy costs\n");
+    let _ = writeln!(
+        d,
+        "Regenerate: `bash scripts/accuracy.sh` (emulator figures into `docs/accuracy/target.csv`, then \
+         `cargo run --release --manifest-path tools/accuracy/Cargo.toml`, which renders every configuration and \
+         rewrites this file and `docs/accuracy/`). `bash scripts/accuracy.sh --quick` checks that the tables of the \
+         built-in scenes are current (CI runs it).\n"
+    );
+    if quick {
+        let _ = writeln!(d, "*Quick run: built-in scenes only.*\n");
+    }
+    for n in &results.notes {
+        let _ = writeln!(d, "*{n}*\n");
+    }
+    let _ = writeln!(d, "{}", include_str!("method.md"));
+    for c in CHOICES {
+        let scenes: Vec<&str> = c.scenes.iter().copied().filter(|s| scene_names.contains(s)).collect();
+        if scenes.is_empty() {
+            continue;
+        }
+        let _ = writeln!(d, "## {}\n\nScenes: {}.\n", c.name, scenes.join(", "));
+        let ideal = if c.model { " PSNR / mean vs ideal |" } else { "" };
+        let ideal_rule = if c.model { " ---: |" } else { "" };
+        let _ = writeln!(
+            d,
+            "| option | PSNR dB / mean error |{ideal} max / p99 error | coverage px | depth px | UV p99 (texels) | M4F instr / frame | M0+ instr / frame |"
+        );
+        let _ = writeln!(d, "| --- | ---: |{ideal_rule} ---: | ---: | ---: | ---: | ---: | ---: |");
+        for (label, key) in c.options {
+            let Some(e) = combined(results, key, &scenes, false) else { continue };
+            let i = if c.model { combined(results, key, &scenes, true) } else { None };
+            let _ = write!(d, "{}", row(label, &e, i.as_ref(), time(target, key, &scenes, "m4f"), time(target, key, &scenes, "m0")));
+        }
+        let _ = writeln!(d);
+    }
+    let _ = writeln!(d, "## Error against time\n");
+    if target.is_empty() {
+        let _ = writeln!(d, "No emulator figures yet (`docs/accuracy/target.csv` is missing).\n");
+    } else {
+        let _ = writeln!(d, "![Mean PSNR of all scenes against Cortex-M4F instructions per frame, one point per configuration](accuracy/error-vs-time.svg)\n");
+    }
+    let _ = writeln!(d, "## Artifacts\n\n{}\n", include_str!("artifacts.md"));
+    let _ = writeln!(d, "## Per scene\n");
+    for (name, about) in &results.scenes {
+        let _ = writeln!(d, "{SCENE_BEGIN} {name} -->\n### `{name}`\n\n{about}.\n");
+        let _ = writeln!(d, "| configuration | PSNR dB | mean / max / p99 error | coverage px | depth px | UV max / p99 (texels) | PSNR vs ideal | M4F instr / frame | M0+ instr / frame |");
+        let _ = writeln!(d, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+        for c in CONFIGS {
+            let Some((e, i)) = results.errors.get(&(c.key, *name)) else { continue };
+            let t = |core: &str| {
+                target.get(&(c.key.to_string(), name.to_string(), core.to_string())).map_or("–".into(), |v| thousands(*v as f64))
+            };
+            let _ = writeln!(
+                d,
+                "| `{}` | {} | {:.2} / {} / {} | {} | {} | {} / {} | {} | {} | {} |",
+                c.key,
+                psnr(e.psnr),
+                e.mean,
+                e.max,
+                e.p99,
+                e.coverage,
+                e.depth,
+                uv(e.uv_max),
+                uv(e.uv_p99),
+                psnr(i.psnr),
+                t("m4f"),
+                t("m0")
+            );
+        }
+        let _ = writeln!(d, "\n{SCENE_END}\n");
+    }
+    d
+}
+
+/// Writes the document, the plot and the crops.
+pub fn write_all(
+    out: &Path,
+    doc: &str,
+    results: &Results,
+    target: &Target,
+    images: &BTreeMap<(&'static str, &'static str), CoreImages>,
+    references: &BTreeMap<&'static str, BTreeMap<(bool, bool), RefImage>>,
+) -> Result<(), String> {
+    let dir = out.join("accuracy");
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    std::fs::write(out.join("accuracy.md"), doc).map_err(|e| e.to_string())?;
+    if !target.is_empty() {
+        plot(&dir.join("error-vs-time.svg"), results, target)?;
+    }
+    crops(&dir, images, references)
+}
+
+fn plot(path: &Path, results: &Results, target: &Target) -> Result<(), String> {
+    use plotters::prelude::*;
+    let scenes: Vec<&str> = results.scenes.iter().map(|s| s.0).collect();
+    let points: Vec<(f64, f64, &str)> = CONFIGS
+        .iter()
+        .filter_map(|c| Some((time(target, c.key, &scenes, "m4f")?, combined(results, c.key, &scenes, true)?.psnr, c.key)))
+        .collect();
+    if points.is_empty() {
+        return Ok(());
+    }
+    let (x0, x1) = points.iter().fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let (y0, y1) = points.iter().fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    root.fill(&WHITE).map_err(e)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption("Error against time: every configuration, all scenes", ("sans-serif", 20))
+        .margin(20)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(x0 * 0.95..x1 * 1.05, (y0 - 1.0)..(y1 + 1.0))
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("Cortex-M4F instructions per frame (mean of the scenes)")
+        .y_desc("PSNR against the ideal, dB (higher is better)")
+        .draw()
+        .map_err(e)?;
+    chart.draw_series(points.iter().map(|&(x, y, _)| Circle::new((x, y), 4, BLUE.filled()))).map_err(e)?;
+    chart.draw_series(points.iter().map(|&(x, y, k)| Text::new(k.to_string(), (x, y), ("sans-serif", 11).into_font()))).map_err(e)?;
+    root.present().map_err(e)?;
+    Ok(())
+}
+
+/// The window of `w`×`h` pixels where `score` sums highest.
+fn worst_window(score: &[f64], w: usize, h: usize) -> (usize, usize) {
+    let mut best = (0.0, 0, 0);
+    for y in (0..=HEIGHT - h).step_by(4) {
+        for x in (0..=WIDTH - w).step_by(4) {
+            let s: f64 = (y..y + h).map(|yy| score[yy * WIDTH + x..yy * WIDTH + x + w].iter().sum::<f64>()).sum();
+            if s > best.0 {
+                best = (s, x, y);
+            }
+        }
+    }
+    (best.1, best.2)
+}
+
+fn reference_color(r: &RefImage, i: usize) -> Rgb888 {
+    let q = |v: f64, max: f64| (v.clamp(0.0, 1.0) * max).round() as u8;
+    Rgb888::from(Rgb565::new(q(r.color[i][0], 31.0), q(r.color[i][1], 63.0), q(r.color[i][2], 31.0)))
+}
+
+/// Side-by-side crops, three times enlarged, each labeled.
+fn strip(
+    path: &Path,
+    panels: &[(&str, Box<dyn Fn(usize) -> Rgb888 + '_>)],
+    (x0, y0): (usize, usize),
+    (w, h): (usize, usize),
+) -> Result<(), String> {
+    const ZOOM: usize = 3;
+    const GAP: usize = 6;
+    const LABEL: usize = 14;
+    let width = panels.len() * (w * ZOOM + GAP) - GAP;
+    let mut img = Image::new(width as u32, (h * ZOOM + LABEL) as u32, Rgb888::WHITE);
+    for (k, (label, color)) in panels.iter().enumerate() {
+        let left = k * (w * ZOOM + GAP);
+        for y in 0..h * ZOOM {
+            for x in 0..w * ZOOM {
+                let c = color((y0 + y / ZOOM) * WIDTH + x0 + x / ZOOM);
+                img.pixels[(LABEL + y) * width + left + x] = c;
+            }
+        }
+        let style = MonoTextStyle::new(&FONT_6X10, Rgb888::BLACK);
+        let _ = Text::new(label, Point::new(left as i32 + 2, 10), style).draw(&mut img);
+    }
+    img.save_png(path).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+fn crops(
+    dir: &Path,
+    images: &BTreeMap<(&'static str, &'static str), CoreImages>,
+    references: &BTreeMap<&'static str, BTreeMap<(bool, bool), RefImage>>,
+) -> Result<(), String> {
+    let core = |key: &str, scene: &str| images.iter().find(|((k, s), _)| *k == key && *s == scene).map(|(_, v)| v);
+    let size = (72, 40);
+    // Affine swimming: where affine texturing is farthest from the reference.
+    if let (Some(affine), Some(span), Some(exact), Some(r)) = (
+        core("fixed-4-affine-nearest-gouraud", "floor"),
+        core("fixed-4-span16-nearest-gouraud", "floor"),
+        core("fixed-4-exact-nearest-gouraud", "floor"),
+        references.get("floor").and_then(|m| m.get(&(false, false))),
+    ) {
+        let score: Vec<f64> = (0..WIDTH * HEIGHT).map(|i| (Rgb888::from(affine.color[i]) != reference_color(r, i)) as u8 as f64).collect();
+        let at = worst_window(&score, size.0, size.1);
+        strip(
+            &dir.join("affine.png"),
+            &[
+                ("affine", Box::new(|i| Rgb888::from(affine.color[i]))),
+                ("every 16 px", Box::new(|i| Rgb888::from(span.color[i]))),
+                ("every pixel", Box::new(|i| Rgb888::from(exact.color[i]))),
+                ("reference", Box::new(|i| reference_color(r, i))),
+            ],
+            at,
+            size,
+        )?;
+    }
+    // Depth fighting: where the baseline's visible plane is most often wrong.
+    if let (Some(fixed), Some(float), Some(r)) = (
+        core("fixed-4-span16-nearest-gouraud", "zfight"),
+        core("f32-4-span16-nearest-gouraud", "zfight"),
+        references.get("zfight").and_then(|m| m.get(&(false, false))),
+    ) {
+        let score: Vec<f64> = (0..WIDTH * HEIGHT).map(|i| (fixed.object[i] != r.object[i]) as u8 as f64).collect();
+        let at = worst_window(&score, size.0, size.1);
+        strip(
+            &dir.join("depth.png"),
+            &[
+                ("16-bit depth, fixed", Box::new(|i| Rgb888::from(fixed.color[i]))),
+                ("16-bit depth, f32", Box::new(|i| Rgb888::from(float.color[i]))),
+                ("reference", Box::new(|i| reference_color(r, i))),
+            ],
+            at,
+            size,
+        )?;
+    }
+    // Sub-pixel precision: where 0 bits moves edges most.
+    let scene = if images.keys().any(|(_, s)| *s == "torus") { "torus" } else { "floor" };
+    if let (Some(b0), Some(b4), Some(b8), Some(r)) = (
+        core("fixed-0-span16-nearest-gouraud", scene),
+        core("fixed-4-span16-nearest-gouraud", scene),
+        core("fixed-8-span16-nearest-gouraud", scene),
+        references.get(scene).and_then(|m| m.get(&(false, false))),
+    ) {
+        let score: Vec<f64> = (0..WIDTH * HEIGHT).map(|i| (b0.object[i].is_some() != r.object[i].is_some()) as u8 as f64).collect();
+        let at = worst_window(&score, size.0, size.1);
+        strip(
+            &dir.join("subpixel.png"),
+            &[
+                ("0 sub-pixel bits", Box::new(|i| Rgb888::from(b0.color[i]))),
+                ("4 bits", Box::new(|i| Rgb888::from(b4.color[i]))),
+                ("8 bits", Box::new(|i| Rgb888::from(b8.color[i]))),
+                ("reference", Box::new(|i| reference_color(r, i))),
+            ],
+            at,
+            size,
+        )?;
+    }
+    Ok(())
+}
