@@ -23,7 +23,7 @@ const fn valid(m: Result<Mesh<'static>, crate::mesh::MeshError>) -> Mesh<'static
 
 /// RGB565 from 8-bit channels, rounded.
 const fn rgb565(r: u32, g: u32, b: u32) -> u16 {
-    (((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | (b * 31 + 127) / 255) as u16
+    (((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | ((b * 31 + 127) / 255)) as u16
 }
 
 /// Side of the checkerboard texture.

@@ -280,13 +280,11 @@ fn reference_color(r: &RefImage, i: usize) -> Rgb888 {
     Rgb888::from(Rgb565::new(q(r.color[i][0], 31.0), q(r.color[i][1], 63.0), q(r.color[i][2], 31.0)))
 }
 
+/// A labeled panel of a crop strip: the color of pixel `i` of an image.
+type Panel<'a> = (&'a str, Box<dyn Fn(usize) -> Rgb888 + 'a>);
+
 /// Side-by-side crops, three times enlarged, each labeled.
-fn strip(
-    path: &Path,
-    panels: &[(&str, Box<dyn Fn(usize) -> Rgb888 + '_>)],
-    (x0, y0): (usize, usize),
-    (w, h): (usize, usize),
-) -> Result<(), String> {
+fn strip(path: &Path, panels: &[Panel<'_>], (x0, y0): (usize, usize), (w, h): (usize, usize)) -> Result<(), String> {
     const ZOOM: usize = 3;
     const GAP: usize = 6;
     const LABEL: usize = 14;
