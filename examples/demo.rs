@@ -90,7 +90,7 @@ fn turntable(path: &str, frames: usize, out: &str, gif: Option<&str>) {
     for w in &scene.warnings {
         eprintln!("warning: {w}");
     }
-    let materials = scene.materials::<Bilinear, Repeat, PerSpan<16>>(EffectChoice::Auto);
+    let materials = scene.materials::<Bilinear, Repeat, PerSpan<32>>(EffectChoice::Auto);
     let camera = scene.camera_or_default();
     let lights = HostScene::headlight(&camera);
     let mut renderer: soft3d::HostRenderer<Rgb565, 6, FixedPoint> =

@@ -75,7 +75,7 @@ fn parse_args() -> Result<Options, String> {
         width: 320,
         height: 240,
         strip: None,
-        subpixel_bits: 4,
+        subpixel_bits: <soft3d::FixedPoint as soft3d::Settings>::SUBPIXEL_BITS,
         effect: "unlit".into(),
         cull: Cull::None,
         float: false,

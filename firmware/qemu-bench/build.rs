@@ -19,9 +19,11 @@ fn main() {
         println!("cargo:warning=../shared/assets is absent: the Babylon benchmark scenes are skipped");
         return;
     }
-    // Geometry only: the benchmark draws these scenes untextured.
-    let options = soft3d_bake::Options { texture_format: soft3d_bake::TextureFormat::None, ..Default::default() };
+    // The torus as geometry only; the monkey with its texture (RGB565,
+    // full size), which the accuracy study draws.
     for (file, rust) in scenes {
+        let texture_format = if file == "monkey.babylon" { soft3d_bake::TextureFormat::Rgb565 } else { soft3d_bake::TextureFormat::None };
+        let options = soft3d_bake::Options { texture_format, ..Default::default() };
         match soft3d_bake::bake_file(&assets.join(file), &out.join(rust), &options) {
             Ok(report) => {
                 for input in report.inputs {

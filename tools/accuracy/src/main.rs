@@ -46,41 +46,28 @@ pub struct Config {
     render: fn(&Scene, bool) -> CoreImages,
 }
 
-macro_rules! config {
-    ($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $filter:ident, $phong:literal) => {
-        Config {
-            key: $key,
-            interp: $interp,
-            bits: $bits,
-            perspective: $persp,
-            filter: RefFilter::$filter,
-            phong: $phong,
-            render: render::render::<Precision<$scalar, $bits>, $p, $filter>,
-        }
+/// Expands the shared list (`configs.rs`) into [`CONFIGS`].
+macro_rules! study_configs {
+    ($(($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $filter:ident, $phong:literal)),* $(,)?) => {
+        /// Every configuration the study renders (`configs.rs`); the first
+        /// is the baseline, the crate's defaults: `FixedPoint` (16.16, 6
+        /// sub-pixel bits), exact perspective every 16 pixels, nearest
+        /// texels, Gouraud.
+        pub const CONFIGS: &[Config] = &[$(
+            Config {
+                key: $key,
+                interp: $interp,
+                bits: $bits,
+                perspective: $persp,
+                filter: RefFilter::$filter,
+                phong: $phong,
+                render: render::render::<Precision<$scalar, $bits>, $p, $filter>,
+            }
+        ),*];
     };
 }
 
-/// Every configuration the study renders. The baseline is the first: the
-/// crate's `FixedPoint` (16.16, 4 sub-pixel bits), exact perspective every
-/// 16 pixels, nearest texels, Gouraud.
-pub const CONFIGS: &[Config] = &[
-    config!("fixed-4-span16-nearest-gouraud", "fixed 16.16", Fixed, 4, "every 16 px", PerSpan<16>, Nearest, false),
-    config!("f32-4-span16-nearest-gouraud", "f32", f32, 4, "every 16 px", PerSpan<16>, Nearest, false),
-    config!("fixed-0-span16-nearest-gouraud", "fixed 16.16", Fixed, 0, "every 16 px", PerSpan<16>, Nearest, false),
-    config!("fixed-2-span16-nearest-gouraud", "fixed 16.16", Fixed, 2, "every 16 px", PerSpan<16>, Nearest, false),
-    config!("fixed-6-span16-nearest-gouraud", "fixed 16.16", Fixed, 6, "every 16 px", PerSpan<16>, Nearest, false),
-    config!("fixed-8-span16-nearest-gouraud", "fixed 16.16", Fixed, 8, "every 16 px", PerSpan<16>, Nearest, false),
-    config!("fixed-4-affine-nearest-gouraud", "fixed 16.16", Fixed, 4, "affine", Affine, Nearest, false),
-    config!("fixed-4-span8-nearest-gouraud", "fixed 16.16", Fixed, 4, "every 8 px", PerSpan<8>, Nearest, false),
-    config!("fixed-4-span32-nearest-gouraud", "fixed 16.16", Fixed, 4, "every 32 px", PerSpan<32>, Nearest, false),
-    config!("fixed-4-exact-nearest-gouraud", "fixed 16.16", Fixed, 4, "every pixel", PerPixel, Nearest, false),
-    config!("fixed-4-span16-bilinear-gouraud", "fixed 16.16", Fixed, 4, "every 16 px", PerSpan<16>, Bilinear, false),
-    config!("fixed-4-span16-nearest-phong", "fixed 16.16", Fixed, 4, "every 16 px", PerSpan<16>, Nearest, true),
-    config!("f32-4-affine-nearest-gouraud", "f32", f32, 4, "affine", Affine, Nearest, false),
-    config!("f32-8-exact-bilinear-phong", "f32", f32, 8, "every pixel", PerPixel, Bilinear, true),
-    config!("fixed-4-affine-nearest-phong", "fixed 16.16", Fixed, 4, "affine", Affine, Nearest, true),
-    config!("fixed-8-exact-bilinear-gouraud", "fixed 16.16", Fixed, 8, "every pixel", PerPixel, Bilinear, false),
-];
+include!("../configs.rs");
 
 /// A question the study answers: one choice, its options (keys into
 /// [`CONFIGS`]), each differing from the baseline in that choice only.
@@ -96,59 +83,78 @@ pub struct Choice {
     pub model: bool,
 }
 
+/// Scenes whose shading the choices change (the planes of `zfight` only
+/// test depth).
+const SHADED: &[&str] = &["torus", "monkey", "floor"];
+
 /// The choices, each alone against the baseline, then combinations.
 pub const CHOICES: &[Choice] = &[
     Choice {
         name: "Interpolation scalar",
-        scenes: &["torus", "monkey", "floor", "zfight"],
-        options: &[("fixed 16.16", "fixed-4-span16-nearest-gouraud"), ("f32", "f32-4-span16-nearest-gouraud")],
+        scenes: SHADED,
+        options: &[("fixed 16.16", "fixed-6-span16-nearest-gouraud"), ("f32", "f32-6-span16-nearest-gouraud")],
         model: false,
     },
     Choice {
         name: "Sub-pixel bits",
-        scenes: &["torus", "monkey", "floor", "zfight"],
+        scenes: SHADED,
         options: &[
             ("0", "fixed-0-span16-nearest-gouraud"),
             ("2", "fixed-2-span16-nearest-gouraud"),
             ("4", "fixed-4-span16-nearest-gouraud"),
-            ("6", "fixed-6-span16-nearest-gouraud"),
+            ("6 (default)", "fixed-6-span16-nearest-gouraud"),
             ("8", "fixed-8-span16-nearest-gouraud"),
         ],
         model: false,
     },
     Choice {
         name: "Perspective correction",
-        scenes: &["torus", "monkey", "floor", "zfight"],
+        scenes: SHADED,
         options: &[
-            ("affine", "fixed-4-affine-nearest-gouraud"),
-            ("every 32 px", "fixed-4-span32-nearest-gouraud"),
-            ("every 16 px", "fixed-4-span16-nearest-gouraud"),
-            ("every 8 px", "fixed-4-span8-nearest-gouraud"),
-            ("every pixel", "fixed-4-exact-nearest-gouraud"),
+            ("fixed, affine", "fixed-6-affine-nearest-gouraud"),
+            ("fixed, every 32 px", "fixed-6-span32-nearest-gouraud"),
+            ("fixed, every 16 px", "fixed-6-span16-nearest-gouraud"),
+            ("fixed, every 8 px", "fixed-6-span8-nearest-gouraud"),
+            ("fixed, every pixel", "fixed-6-exact-nearest-gouraud"),
+            ("f32, affine", "f32-6-affine-nearest-gouraud"),
+            ("f32, every 32 px", "f32-6-span32-nearest-gouraud"),
+            ("f32, every 16 px", "f32-6-span16-nearest-gouraud"),
+            ("f32, every pixel", "f32-6-exact-nearest-gouraud"),
         ],
         model: false,
     },
     Choice {
         name: "Texture filter",
         scenes: &["monkey", "floor"],
-        options: &[("nearest", "fixed-4-span16-nearest-gouraud"), ("bilinear", "fixed-4-span16-bilinear-gouraud")],
+        options: &[("nearest", "fixed-6-span16-nearest-gouraud"), ("bilinear", "fixed-6-span16-bilinear-gouraud")],
         model: true,
     },
     Choice {
         name: "Lighting",
-        scenes: &["torus", "zfight"],
-        options: &[("Gouraud (per vertex)", "fixed-4-span16-nearest-gouraud"), ("Phong (per pixel)", "fixed-4-span16-nearest-phong")],
+        scenes: &["torus"],
+        options: &[
+            ("fixed, Gouraud (per vertex)", "fixed-6-span16-nearest-gouraud"),
+            ("fixed, Phong (per pixel)", "fixed-6-span16-nearest-phong"),
+            ("f32, Phong (per pixel)", "f32-6-span16-nearest-phong"),
+        ],
         model: true,
     },
     Choice {
+        name: "Depth",
+        scenes: &["zfight"],
+        options: &[("16-bit, fixed", "fixed-6-span16-nearest-gouraud"), ("16-bit, f32", "f32-6-span16-nearest-gouraud")],
+        model: false,
+    },
+    Choice {
         name: "Combinations",
-        scenes: &["torus", "monkey", "floor", "zfight"],
+        scenes: SHADED,
         options: &[
-            ("cheapest: fixed, 4 bits, affine, nearest, Gouraud", "fixed-4-affine-nearest-gouraud"),
-            ("f32, 4 bits, affine, nearest, Gouraud", "f32-4-affine-nearest-gouraud"),
-            ("baseline: fixed, 4 bits, every 16 px, nearest, Gouraud", "fixed-4-span16-nearest-gouraud"),
+            ("cheapest: fixed, affine, nearest, Gouraud", "fixed-6-affine-nearest-gouraud"),
+            ("f32, affine, nearest, Gouraud", "f32-6-affine-nearest-gouraud"),
+            ("baseline: fixed, every 16 px, nearest, Gouraud", "fixed-6-span16-nearest-gouraud"),
+            ("f32, every 32 px, bilinear, Gouraud", "f32-6-span32-bilinear-gouraud"),
             ("fixed, 8 bits, every pixel, bilinear, Gouraud", "fixed-8-exact-bilinear-gouraud"),
-            ("fixed, 4 bits, affine, nearest, Phong", "fixed-4-affine-nearest-phong"),
+            ("fixed, affine, nearest, Phong", "fixed-6-affine-nearest-phong"),
             ("best: f32, 8 bits, every pixel, bilinear, Phong", "f32-8-exact-bilinear-phong"),
         ],
         model: true,
@@ -164,6 +170,19 @@ pub struct Results {
     pub scenes: Vec<(&'static str, &'static str)>,
     /// Notes (skipped scenes).
     pub notes: Vec<String>,
+    /// Checksum of each color image (`soft3d::scenes::FrameChecksum`), to
+    /// compare with the emulated targets'.
+    pub checksums: BTreeMap<(&'static str, &'static str), u32>,
+}
+
+/// The benchmark's frame checksum of an image.
+fn checksum(pixels: &[embedded_graphics::pixelcolor::Rgb565]) -> u32 {
+    use embedded_graphics::pixelcolor::Rgb565;
+    use embedded_graphics::prelude::*;
+    let mut sink = soft3d::scenes::FrameChecksum::new(scenes::WIDTH as u32, scenes::HEIGHT as u32, Rgb565::BLACK);
+    let area = embedded_graphics::primitives::Rectangle::new(Point::zero(), sink.size());
+    let Ok(()) = sink.fill_contiguous(&area, pixels.iter().copied());
+    sink.sum
 }
 
 struct Args {
@@ -216,6 +235,7 @@ fn main() -> ExitCode {
         eprintln!("{n}");
     }
     let mut errors = BTreeMap::new();
+    let mut checksums = BTreeMap::new();
     let mut images: BTreeMap<(&'static str, &'static str), CoreImages> = BTreeMap::new();
     let mut references: BTreeMap<&'static str, BTreeMap<(bool, bool), RefImage>> = BTreeMap::new();
     for scene in &scenes {
@@ -234,13 +254,22 @@ fn main() -> ExitCode {
             let same = &refs[&(c.phong, c.filter == RefFilter::Bilinear)];
             let ideal = &refs[&(true, true)];
             errors.insert((c.key, scene.name), (metrics::compare(&img, same, wrap), metrics::compare(&img, ideal, wrap)));
+            checksums.insert((c.key, scene.name), checksum(&img.color));
             images.insert((c.key, scene.name), img);
         }
         eprintln!("{}: {} configurations", scene.name, CONFIGS.len());
     }
-    let results = Results { errors, scenes: scenes.iter().map(|s| (s.name, s.about)).collect(), notes };
+    let results = Results { errors, scenes: scenes.iter().map(|s| (s.name, s.about)).collect(), notes, checksums };
     let target = report::read_target(&args.target);
-    let doc = report::markdown(&results, &target, args.quick);
+    let parity = report::parity(&results, &target);
+    for line in &parity.mismatches {
+        eprintln!("accuracy: {line}");
+    }
+    if !parity.mismatches.is_empty() {
+        eprintln!("accuracy: host and emulated images differ ({} frames)", parity.mismatches.len());
+        return ExitCode::FAILURE;
+    }
+    let doc = report::markdown(&results, &target, &parity, args.quick);
     let path = args.out.join("accuracy.md");
     if args.check {
         let old = std::fs::read_to_string(&path).unwrap_or_default();
