@@ -26,9 +26,9 @@ impl<I: Interp, const B: u32> Settings for Precision<I, B> {
 
 /// Fixed-point interpolation, 6 sub-pixel bits: for FPU-less parts
 /// (Cortex-M0+). Six bits, because the accuracy study (`docs/accuracy.md`)
-/// measured them 3.6 dB closer to the exact image than four, with edges
-/// that follow the reference, at no measurable cost in instructions; the
-/// guard band is then 32,768 pixels.
+/// measured them clearly closer to the exact image than four (edges follow
+/// the reference), at no measurable cost in instructions; the guard band is
+/// then 32,768 pixels.
 pub type FixedPoint = Precision<Fixed, 6>;
 /// `f32` interpolation, 6 sub-pixel bits: for parts with an FPU (Cortex-M4F,
 /// M33F), where the study measured it both faster and more accurate than

@@ -10,6 +10,7 @@ fn main() {
     println!("cargo:rustc-link-search={}", out.display());
     println!("cargo:rerun-if-changed=memory.x");
     println!("cargo:rerun-if-env-changed=SOFT3D_BENCH_ONLY");
+    println!("cargo:rerun-if-env-changed=SOFT3D_STUDY_ONLY");
     println!("cargo::rustc-check-cfg=cfg(soft3d_assets)");
 
     let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/assets");

@@ -59,6 +59,16 @@ impl Fixed {
     /// `1 / self`, saturating; zero maps to the largest value.
     #[inline]
     pub fn saturating_recip(self) -> Self {
+        if self.0 > 0 {
+            // 2^32 / r in 32-bit unsigned division (one instruction on a
+            // Cortex-M3/M4, where the 64-bit one is a library call of a
+            // hundred or more): (2^32 - 1) / r is the same floor unless r
+            // divides 2^32, which the check catches.
+            let r = self.0 as u32;
+            let q = u32::MAX / r;
+            let q = if q.wrapping_add(1).wrapping_mul(r) == 0 { q as u64 + 1 } else { q as u64 };
+            return Self(q.min(i32::MAX as u64) as i32);
+        }
         if self.0 == 0 {
             return Self(i32::MAX);
         }
@@ -76,6 +86,14 @@ impl fmt::Debug for Fixed {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn reciprocals_equal_the_64_bit_division() {
+        for r in (1..=70_000i32).chain([1 << 16, 1 << 20, 3 << 20, i32::MAX, -1, -7, -(1 << 16), i32::MIN, 0]) {
+            let expect = if r == 0 { i32::MAX as i64 } else { ((1i64 << 32) / r as i64).clamp(i32::MIN as i64, i32::MAX as i64) };
+            assert_eq!(Fixed::from_bits(r).saturating_recip().to_bits() as i64, expect, "1 / {r}");
+        }
+    }
 
     #[test]
     fn conversions_round_and_saturate() {

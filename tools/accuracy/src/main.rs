@@ -85,7 +85,7 @@ pub struct Choice {
 
 /// Scenes whose shading the choices change (the planes of `zfight` only
 /// test depth).
-const SHADED: &[&str] = &["torus", "monkey", "floor"];
+pub const SHADED: &[&str] = &["torus", "monkey", "floor"];
 
 /// The choices, each alone against the baseline, then combinations.
 pub const CHOICES: &[Choice] = &[

@@ -92,12 +92,20 @@ where
     measure::<S, P, F>(timer, &mut renderer, key, "zfight", (ZFIGHT_CAMERA, ZFIGHT_LIGHTS), &planes, phong);
 }
 
+/// Built with `SOFT3D_STUDY_ONLY=key` in the environment, only that
+/// configuration runs (for `scripts/qemu-profile.py`).
+const ONLY: Option<&str> = option_env!("SOFT3D_STUDY_ONLY");
+
 /// Expands the study's shared list into `run_all`.
 macro_rules! study_configs {
     ($(($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $f:ty, $phong:literal)),* $(,)?) => {
         /// Times every configuration of the study.
         fn run_all(timer: &mut Timer) {
-            $( config::<Precision<$scalar, $bits>, $p, $f>(timer, $key, $phong); )*
+            $(
+                if ONLY.is_none_or(|only| only == $key) {
+                    config::<Precision<$scalar, $bits>, $p, $f>(timer, $key, $phong);
+                }
+            )*
         }
     };
 }
