@@ -115,17 +115,44 @@ pub fn clip_polygon<T: Copy>(poly: &mut Polygon<T>, dist: impl Fn(&T) -> f64, le
 }
 
 /// Clips a clip-space triangle to `0 <= z <= w`.
+///
+/// Crossings are computed in `f64` and placed exactly on the plane
+/// (`z = 0`, or `z = w`). In `f32`, `a + (b - a)·t` from a far vertex
+/// (say at 10^7) is off by about `|b|·2^-24` ≈ 0.6 in `w`: the crossing's
+/// `w`, which is the near distance (0.1 for the default camera), could
+/// land anywhere, even below zero, and the clipped edge moved or flipped
+/// to the other side of the screen. Clipping is rare, so `f64` costs
+/// nothing measurable.
 pub fn clip_near_far<const V: usize>(poly: &mut Polygon<ClipVertex<V>>) {
     let lerp = |a: &ClipVertex<V>, b: &ClipVertex<V>, t: f64| {
-        let t = t as f32;
+        let tf = t as f32;
         let mut attrs = a.attrs;
         for (o, (x, y)) in attrs.iter_mut().zip(a.attrs.iter().zip(b.attrs.iter())) {
-            *o = x + (y - x) * t;
+            *o = x + (y - x) * tf;
         }
-        ClipVertex { pos: a.pos.lerp(b.pos, t), attrs, src: NO_SOURCE }
+        let at = |p: f32, q: f32| (p as f64 + (q as f64 - p as f64) * t) as f32;
+        let (pa, pb) = (a.pos, b.pos);
+        let pos = Vec4 { x: at(pa.x, pb.x), y: at(pa.y, pb.y), z: at(pa.z, pb.z), w: at(pa.w, pb.w) };
+        ClipVertex { pos, attrs, src: NO_SOURCE }
     };
-    clip_polygon(poly, |v| v.pos.z as f64, lerp);
-    clip_polygon(poly, |v| (v.pos.w - v.pos.z) as f64, lerp);
+    clip_polygon(
+        poly,
+        |v| v.pos.z as f64,
+        |a, b, t| {
+            let mut v = lerp(a, b, t);
+            v.pos.z = 0.0;
+            v
+        },
+    );
+    clip_polygon(
+        poly,
+        |v| v.pos.w as f64 - v.pos.z as f64,
+        |a, b, t| {
+            let mut v = lerp(a, b, t);
+            v.pos.z = v.pos.w;
+            v
+        },
+    );
 }
 
 /// Projects a clip-space vertex (with `w > 0`) to window coordinates of a
@@ -186,7 +213,7 @@ mod tests {
     use super::*;
 
     fn cv(x: f32, y: f32, z: f32, w: f32, a: f32) -> ClipVertex<1> {
-        ClipVertex { pos: Vec4::new(x, y, z, w), attrs: [a], src: NO_SOURCE }
+        ClipVertex { pos: Vec4::new(x, y, z, w), attrs: [a], src: 0 }
     }
 
     #[test]
@@ -203,6 +230,37 @@ mod tests {
         assert_eq!(p.len(), 3);
         // The attribute is interpolated at the crossing: z goes -1 -> 1, so t = 0.5.
         assert!(p.iter().any(|v| (v.attrs[0] - 0.5).abs() < 1e-6));
+    }
+
+    #[test]
+    fn crossings_lie_exactly_inside_the_depth_range() {
+        // From the `clip` fuzzer: a projection with z ≈ 1.001·w, so where
+        // an edge crosses z = 0, w is ~1e-4 while the far vertex sits at
+        // 4.5e6. In f32 the crossing's w came out -2.4e-5: the vertex
+        // projected to the other side of the screen, and colors
+        // interpolated toward it left their range.
+        let (a, b, c) = (
+            cv(23.042974, -13560.758, 1686.259, 1684.5729, 0.0),
+            cv(-55144256.0, -3253765.0, -4533410.5, -4528877.0, 1.0),
+            cv(-11020.453, -14209.659, 778.0358, 777.2578, 0.5),
+        );
+        let mut p: Polygon<_> = [a, b, c].into_iter().collect();
+        clip_near_far(&mut p);
+        assert!(!p.is_empty());
+        for v in &p {
+            assert!(v.pos.z >= 0.0 && v.pos.z <= v.pos.w && v.pos.w > 0.0, "{:?}", v.pos);
+        }
+        // A well-formed projection (z = w - 0.1): the near crossings have
+        // w = 0.1, whatever the distance of the vertex behind the eye.
+        let behind = -4.0e7 - 0.7;
+        let mut p: Polygon<_> =
+            [cv(0.0, 0.0, 0.9, 1.0, 0.0), cv(3.0, 0.0, 0.9, 1.0, 0.0), cv(behind, behind, behind - 0.1, behind, 1.0)].into_iter().collect();
+        clip_near_far(&mut p);
+        assert_eq!(p.len(), 4);
+        for v in p.iter().filter(|v| v.src == NO_SOURCE) {
+            assert_eq!(v.pos.z, 0.0);
+            assert!((v.pos.w - 0.1).abs() < 1e-6, "w = {}", v.pos.w);
+        }
     }
 
     #[test]

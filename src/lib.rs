@@ -70,7 +70,7 @@ pub use renderer::{DrawError, Frame, FrameStats, Renderer};
 #[cfg(feature = "std")]
 pub use renderer::{HostRenderer, SizeError};
 pub use scene::{Camera, DirectionalLight, Lights, PointLight};
-pub use settings::{FixedPoint, FloatingPoint, Precision, Settings};
+pub use settings::{Depth16, Depth32, DepthF32, DepthFormat, FixedPoint, FloatingPoint, Precision, Settings};
 
 /// The README's examples are compiled and run as doctests.
 #[cfg(doctest)]

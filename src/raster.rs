@@ -22,6 +22,7 @@
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
 use crate::math::Interp;
+use crate::settings::DepthFormat;
 
 /// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
 /// sub-pixel precision, in units of `2^-F` pixels (`F = subpixel_bits + 1`):
@@ -44,9 +45,6 @@ pub const fn guard(subpixel_bits: u32) -> i32 {
 /// interpolation rounding at the vertices. "Nearer than stored" is then
 /// `new > stored`; ties keep the first fragment, like a "less" test on z.
 const DEPTH_RANGE: f32 = 65534.0;
-
-/// Cleared depth value (farther than anything drawable).
-pub const DEPTH_CLEAR: u16 = 0;
 
 /// A vertex in window space, ready for setup.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -192,11 +190,11 @@ impl EdgeWalker {
 }
 
 /// The part of a frame one strip covers.
-pub struct StripTarget<'a, C> {
+pub struct StripTarget<'a, C, Z> {
     /// Colors, `width` per row.
     pub color: &'a mut [C],
-    /// Depths, `width` per row.
-    pub depth: &'a mut [u16],
+    /// Depths in a [`DepthFormat`]'s values, `width` per row.
+    pub depth: &'a mut [Z],
     /// Row length in pixels.
     pub width: usize,
     /// First frame row of the strip.
@@ -382,8 +380,8 @@ struct Sorted<'v, const V: usize> {
 /// values could leave their ranges (a wrapping scalar's rounding, or a
 /// triangle reaching toward the guard band) takes [`rasterize_careful`].
 #[inline(never)]
-pub fn rasterize<C, S, E, P, D, const V: usize>(
-    target: &mut StripTarget<'_, C>,
+pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
+    target: &mut StripTarget<'_, C, Z::Value>,
     effect: &E,
     uniforms: &E::Uniforms<S>,
     tri: [&ScreenVertex<V>; 3],
@@ -395,6 +393,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     E: Effect,
     P: Perspective,
     D: DepthMode,
+    Z: DepthFormat,
 {
     let f = subpixel_bits + 1;
     // Sort by y: a top, b middle, c bottom.
@@ -429,7 +428,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
     if careful {
         // The planes are set up again there: passing them would keep every
         // plane's `f32` copy alive here, on the hot path, for the rare case.
-        return rasterize_careful::<C, S, E, P, D, V>(target, effect, uniforms, &t, face, f);
+        return rasterize_careful::<C, S, E, P, D, Z, V>(target, effect, uniforms, &t, face, f);
     }
     let n = E::VARYINGS.min(V);
     let Planes { z, q, vary, bounds } = planes;
@@ -462,7 +461,7 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
         }
         let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
         let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
-        span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
+        span::<C, S, E, P, D, Z>(color, depths, effect, uniforms, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
     });
 }
 
@@ -473,8 +472,8 @@ pub fn rasterize<C, S, E, P, D, const V: usize>(
 #[cold]
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
-fn rasterize_careful<C, S, E, P, D, const V: usize>(
-    target: &mut StripTarget<'_, C>,
+fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
+    target: &mut StripTarget<'_, C, Z::Value>,
     effect: &E,
     uniforms: &E::Uniforms<S>,
     t: &Sorted<'_, V>,
@@ -486,6 +485,7 @@ fn rasterize_careful<C, S, E, P, D, const V: usize>(
     E: Effect,
     P: Perspective,
     D: DepthMode,
+    Z: DepthFormat,
 {
     let n = E::VARYINGS.min(V);
     let shape = &Shape::new(t.a, t.b, t.c, f);
@@ -514,7 +514,7 @@ fn rasterize_careful<C, S, E, P, D, const V: usize>(
         for i in 0..n {
             (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
         }
-        span::<C, S, E, P, D>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
+        span::<C, S, E, P, D, Z>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
     });
 }
 
@@ -522,11 +522,11 @@ fn rasterize_careful<C, S, E, P, D, const V: usize>(
 /// and calls `row(target, y, x0, x1)` for each non-empty span of pixels
 /// `x0..x1` (clipped to the strip's width).
 #[inline(always)]
-fn walk_rows<C, const V: usize>(
-    target: &mut StripTarget<'_, C>,
+fn walk_rows<C, Z, const V: usize>(
+    target: &mut StripTarget<'_, C, Z>,
     t: &Sorted<'_, V>,
     f: u32,
-    mut row: impl FnMut(&mut StripTarget<'_, C>, i32, i32, i32),
+    mut row: impl FnMut(&mut StripTarget<'_, C, Z>, i32, i32, i32),
 ) {
     let (a, b, c) = (t.a, t.b, t.c);
     let y_start = t.y_top.max(target.y0);
@@ -550,11 +550,11 @@ fn walk_rows<C, const V: usize>(
     }
 }
 
-impl<C> StripTarget<'_, C> {
+impl<C, Z> StripTarget<'_, C, Z> {
     /// The colors and depths of pixels `x0..x1` of frame row `y` (within
     /// the strip), marked dirty.
     #[inline(always)]
-    fn span(&mut self, y: i32, x0: i32, x1: i32) -> (&mut [C], &mut [u16]) {
+    fn span(&mut self, y: i32, x0: i32, x1: i32) -> (&mut [C], &mut [Z]) {
         let row = (y - self.y0) as usize * self.width;
         let (s0, s1) = (row + x0 as usize, row + x1 as usize);
         self.dirty = (self.dirty.0.min(x0 as usize), self.dirty.1.max(x1 as usize));
@@ -709,9 +709,9 @@ fn floor(v: f32) -> f32 {
 /// perspective division, whose rounding the planes cannot bound).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn span<C, S, E, P, D>(
+fn span<C, S, E, P, D, Z>(
     color: &mut [C],
-    depth: &mut [u16],
+    depth: &mut [Z::Value],
     effect: &E,
     uniforms: &E::Uniforms<S>,
     mut z: S,
@@ -728,6 +728,7 @@ fn span<C, S, E, P, D>(
     E: Effect,
     P: Perspective,
     D: DepthMode,
+    Z: DepthFormat,
 {
     // Values divided by the interpolated q, clamped to their ranges.
     let divide = |v: &[S; MAX_VARYINGS], q: S| {
@@ -764,7 +765,7 @@ fn span<C, S, E, P, D>(
             let pixels = color[start..start + seg].iter_mut().zip(depth[start..start + seg].iter_mut());
             for (px, zb) in pixels {
                 no_unroll();
-                let zq = z.depth16();
+                let zq = Z::store(z);
                 if !D::TEST || zq > *zb {
                     if D::WRITE {
                         *zb = zq;
@@ -783,7 +784,7 @@ fn span<C, S, E, P, D>(
     }
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
         no_unroll();
-        let zq = z.depth16();
+        let zq = Z::store(z);
         if !D::TEST || zq > *zb {
             if D::WRITE {
                 *zb = zq;

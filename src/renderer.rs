@@ -26,9 +26,9 @@ use crate::effect::{vertex_varyings, Color, Effect, FaceInput, VertexInput};
 use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::Mesh;
-use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget, DEPTH_CLEAR};
+use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget};
 use crate::scene::{Camera, Lighting, Lights};
-use crate::settings::{FixedPoint, Settings};
+use crate::settings::{DepthFormat, DepthValue, FixedPoint, Settings};
 use crate::tri::TriVertex;
 use crate::vertex::{self, VertexStage};
 use core::marker::PhantomData;
@@ -133,7 +133,7 @@ pub struct FrameStats {
 pub trait MaterialProgram<C, S: Settings, const V: usize> {
     /// Rasterizes one triangle into a strip, lit by `lights` (the draw
     /// call's, for effects that light pixels).
-    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting);
+    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting);
 }
 
 impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
@@ -144,11 +144,11 @@ where
     P: Perspective,
     D: DepthMode,
 {
-    fn rasterize(&self, target: &mut StripTarget<'_, C>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting) {
+    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting) {
         let uniforms = self.effect.uniforms::<S::Interp>(lights, self.color);
         // Converted only for effects that use it.
         let face = if E::USES_FACE { C::from(face) } else { C::BLACK };
-        raster::rasterize::<C, S::Interp, E, P, D, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS)
+        raster::rasterize::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS)
     }
 }
 
@@ -172,10 +172,10 @@ pub struct Renderer<
     const VERTS: usize,
     const TRIS: usize,
     const V: usize = 3,
-    S = FixedPoint,
+    S: Settings = FixedPoint,
 > {
     color: [[C; W]; STRIP],
-    depth: [[u16; W]; STRIP],
+    depth: [[DepthValue<S>; W]; STRIP],
     vertices: [ScreenVertex<V>; VERTS],
     triangles: [TriRecord; TRIS],
     heads: [u16; H],
@@ -202,7 +202,7 @@ where
         let () = Self::VALID;
         Self {
             color: [[fill; W]; STRIP],
-            depth: [[DEPTH_CLEAR; W]; STRIP],
+            depth: [[S::Depth::CLEAR; W]; STRIP],
             vertices: [ScreenVertex::ZERO; VERTS],
             triangles: [TriRecord::EMPTY; TRIS],
             heads: [0; H],
@@ -257,9 +257,9 @@ impl std::error::Error for SizeError {}
 /// [`Renderer`] with sizes chosen at run time and buffers on the heap, for
 /// host tools (feature `std`). Renders the same pixels as [`Renderer`].
 #[cfg(feature = "std")]
-pub struct HostRenderer<C, const V: usize = 3, S = FixedPoint> {
+pub struct HostRenderer<C, const V: usize = 3, S: Settings = FixedPoint> {
     color: std::vec::Vec<C>,
-    depth: std::vec::Vec<u16>,
+    depth: std::vec::Vec<DepthValue<S>>,
     vertices: std::vec::Vec<ScreenVertex<V>>,
     triangles: std::vec::Vec<TriRecord>,
     heads: std::vec::Vec<u16>,
@@ -290,7 +290,7 @@ where
         }
         Ok(Self {
             color: std::vec![fill; width * strip],
-            depth: std::vec![DEPTH_CLEAR; width * strip],
+            depth: std::vec![S::Depth::CLEAR; width * strip],
             vertices: std::vec![ScreenVertex::ZERO; vertices],
             triangles: std::vec![TriRecord::EMPTY; triangles],
             heads: std::vec![0; height],
@@ -326,9 +326,9 @@ where
 }
 
 /// The memory a frame works in, borrowed from a renderer.
-struct Buffers<'a, C, const V: usize> {
+struct Buffers<'a, C, Z, const V: usize> {
     color: &'a mut [C],
-    depth: &'a mut [u16],
+    depth: &'a mut [Z],
     vertices: &'a mut [ScreenVertex<V>],
     triangles: &'a mut [TriRecord],
     heads: &'a mut [u16],
@@ -343,7 +343,7 @@ struct Buffers<'a, C, const V: usize> {
 /// A frame being recorded. Draw calls queue geometry; [`Frame::finish`]
 /// rasterizes and outputs it. Materials are borrowed until then (`'m`).
 pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
-    b: Buffers<'r, C, V>,
+    b: Buffers<'r, C, DepthValue<S>, V>,
     n_vertices: usize,
     n_triangles: usize,
     draws: Vec<(&'m dyn MaterialProgram<C, S, V>, u16, Lighting), MAX_DRAW_CALLS>,
@@ -361,7 +361,7 @@ where
     C: Color,
     S: Settings,
 {
-    fn new(b: Buffers<'r, C, V>, view_proj: Mat4, lights: &Lights, background: C) -> Self {
+    fn new(b: Buffers<'r, C, DepthValue<S>, V>, view_proj: Mat4, lights: &Lights, background: C) -> Self {
         Self {
             b,
             n_vertices: 0,
@@ -561,11 +561,18 @@ where
         self.stats.clipped += 1;
         let mut poly: Polygon<ClipVertex<V>> = (0..3).map(&clip_vertex).collect();
         clip::clip_near_far(&mut poly);
-        let window: Polygon<WindowVertex<V>> = poly.iter().map(|v| clip::to_window(v, self.b.width as f32, self.b.height as f32)).collect();
-        if window.len() < 3 {
+        if poly.len() < 3 {
             self.stats.off_screen += 1;
             return Ok(());
         }
+        // Inside `0 <= z <= w`, w is positive unless the projection puts
+        // the near plane through the eye (a degenerate matrix): nothing
+        // sensible to draw, and projecting it would flip it across the screen.
+        if !poly.iter().all(|v| v.pos.w > 0.0) {
+            self.stats.invalid += 1;
+            return Ok(());
+        }
+        let window: Polygon<WindowVertex<V>> = poly.iter().map(|v| clip::to_window(v, self.b.width as f32, self.b.height as f32)).collect();
         self.emit_polygon(window, face, cull, perspective)
     }
 
@@ -725,7 +732,7 @@ where
             carried = next_head;
             let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(width as u32, rows as u32));
             let sent = target.fill_contiguous(&area, strip.color.iter().copied());
-            clean_columns(strip, background);
+            clean_columns::<C, S::Depth>(strip, background);
             sent?;
         }
         Ok(stats)
@@ -734,18 +741,18 @@ where
 
 /// Restores the background color and cleared depth in the columns a strip
 /// dirtied.
-fn clean_columns<C: Copy>(strip: StripTarget<'_, C>, background: C) {
+fn clean_columns<C: Copy, Z: DepthFormat>(strip: StripTarget<'_, C, Z::Value>, background: C) {
     let (x0, x1) = strip.dirty;
     if x0 >= x1 {
         return;
     }
     if x1 - x0 == strip.width {
         strip.color.fill(background);
-        strip.depth.fill(DEPTH_CLEAR);
+        strip.depth.fill(Z::CLEAR);
         return;
     }
     for (c, z) in strip.color.chunks_exact_mut(strip.width).zip(strip.depth.chunks_exact_mut(strip.width)) {
         c[x0..x1].fill(background);
-        z[x0..x1].fill(DEPTH_CLEAR);
+        z[x0..x1].fill(Z::CLEAR);
     }
 }

@@ -13,15 +13,85 @@ pub trait Settings: 'static {
     /// Sub-pixel bits of the vertex grid: vertices snap to `1 / 2^bits`
     /// of a pixel before coverage is decided. At most 8.
     const SUBPIXEL_BITS: u32;
+    /// How each pixel's depth is stored.
+    type Depth: DepthFormat;
+}
+
+/// The stored depth value of settings `S` (the depth buffer's element).
+pub type DepthValue<S> = <<S as Settings>::Depth as DepthFormat>::Value;
+
+/// A depth buffer format: what one pixel's depth is stored as.
+///
+/// Depth is interpolated in the settings' scalar as a value in `[1, 65536)`
+/// (larger nearer, linear in screen space); the format decides how much of
+/// that value survives in the buffer, and so how close two surfaces can be
+/// before the depth test cannot order them, at the price of its bytes per
+/// pixel in the strip's depth buffer.
+pub trait DepthFormat: 'static {
+    /// One pixel's stored depth. Larger is nearer.
+    type Value: Copy + PartialOrd + core::fmt::Debug;
+    /// The cleared value: farther than anything drawable.
+    const CLEAR: Self::Value;
+    /// A short name for reports.
+    const NAME: &'static str;
+    /// The stored form of an interpolated depth.
+    fn store<I: Interp>(depth: I) -> Self::Value;
+}
+
+/// 16-bit depth (2 bytes per pixel): the integer part of the depth value.
+/// Surfaces closer than one part in 65,534 of the window depth range
+/// (which is far from uniform in distance: see `docs/accuracy.md`) tie.
+pub struct Depth16;
+
+impl DepthFormat for Depth16 {
+    type Value = u16;
+    const CLEAR: u16 = 0;
+    const NAME: &'static str = "16-bit";
+    #[inline(always)]
+    fn store<I: Interp>(depth: I) -> u16 {
+        depth.depth16()
+    }
+}
+
+/// 32-bit fixed-point depth (4 bytes per pixel): the depth value with 16
+/// fractional bits (15 of them carry information with [`Fixed`]
+/// interpolation, whose plane holds depth halved).
+pub struct Depth32;
+
+impl DepthFormat for Depth32 {
+    type Value = u32;
+    const CLEAR: u32 = 0;
+    const NAME: &'static str = "32-bit fixed";
+    #[inline(always)]
+    fn store<I: Interp>(depth: I) -> u32 {
+        depth.depth32()
+    }
+}
+
+/// `f32` depth (4 bytes per pixel): the interpolated value as it is. With
+/// `f32` interpolation nothing is lost; with [`Fixed`] it holds the same
+/// bits as [`Depth32`], converted.
+pub struct DepthF32;
+
+impl DepthFormat for DepthF32 {
+    type Value = f32;
+    const CLEAR: f32 = 0.0;
+    const NAME: &'static str = "f32";
+    #[inline(always)]
+    fn store<I: Interp>(depth: I) -> f32 {
+        depth.depth_f32()
+    }
 }
 
 /// The standard [`Settings`]: interpolation scalar `I` (`f32` or
-/// [`Fixed`]) and `SUBPIXEL_BITS` bits of sub-pixel precision (0 to 8).
-pub struct Precision<I, const SUBPIXEL_BITS: u32>(PhantomData<I>);
+/// [`Fixed`]), `SUBPIXEL_BITS` bits of sub-pixel precision (0 to 8) and
+/// depth format `Z` ([`Depth16`] unless given).
+pub struct Precision<I, const SUBPIXEL_BITS: u32, Z = Depth16>(PhantomData<(I, Z)>);
 
-impl<I: Interp, const B: u32> Settings for Precision<I, B> {
+impl<I: Interp, const B: u32, Z: DepthFormat> Settings for Precision<I, B, Z> {
     type Interp = I;
     const SUBPIXEL_BITS: u32 = B;
+    type Depth = Z;
 }
 
 /// Fixed-point interpolation, 6 sub-pixel bits: for FPU-less parts

@@ -180,3 +180,17 @@ fn a_projection_that_overflows_skips_the_triangle() {
     let input = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fuzz/clip/projection-overflow");
     clip::run(&std::fs::read(input).expect("committed corpus file"));
 }
+
+/// Found by the `clip` fuzzer in CI: a projection with z ≈ 1.001·w put the
+/// near plane within 1e-4 of the eye. The near-plane crossing of an edge
+/// to a vertex 4.5e6 away was interpolated in `f32`, its `w` came out
+/// negative (-2.4e-5), it projected to the far side of the screen, and
+/// the guard-band clip interpolated colors toward it out of range: green
+/// 23 where the vertices allow at most 3. Fixed: near and far crossings
+/// are computed in `f64` and placed exactly on their plane, and a clipped
+/// polygon with a vertex at `w <= 0` is skipped and counted invalid.
+#[test]
+fn a_near_plane_through_the_eye_keeps_colors_within_its_vertices() {
+    let input = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/fuzz/clip/near-plane-through-eye");
+    clip::run(&std::fs::read(input).expect("committed corpus file"));
+}

@@ -61,6 +61,11 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// A depth value (see [`Interp::DEPTH_SCALE`]) as stored depth, under
     /// the same contract as [`Interp::channel`] for `[0, 65536)`.
     fn depth16(self) -> u16;
+    /// A depth value as stored depth with 16 fractional bits (`f32`:
+    /// saturating).
+    fn depth32(self) -> u32;
+    /// A depth value in stored units as `f32`.
+    fn depth_f32(self) -> f32;
     /// The value of the plane `(value0, dx, dy)` at an offset of
     /// `(ox, oy)` units of `2^-f` pixels from its origin (wrapping in
     /// fixed point: exactly what stepping from the origin would give).
@@ -157,6 +162,14 @@ impl Interp for f32 {
     #[inline(always)]
     fn depth16(self) -> u16 {
         self as u16
+    }
+    #[inline(always)]
+    fn depth32(self) -> u32 {
+        (self * 65536.0) as u32
+    }
+    #[inline(always)]
+    fn depth_f32(self) -> f32 {
+        self
     }
     #[inline]
     fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self {
@@ -262,6 +275,15 @@ impl Interp for Fixed {
     fn depth16(self) -> u16 {
         (self.to_bits() >> (Fixed::FRAC_BITS - 1)) as u16
     }
+    #[inline(always)]
+    fn depth32(self) -> u32 {
+        // Halved depth in 17.15 is the full depth in 16.16, one bit up.
+        (self.to_bits() as u32) << 1
+    }
+    #[inline(always)]
+    fn depth_f32(self) -> f32 {
+        self.to_f32() * 2.0
+    }
     #[inline]
     fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self {
         Fixed::from_bits(Self::plane_exact(value0, dx, dy, ox, oy, f) as i32)
@@ -296,6 +318,8 @@ mod tests {
         assert_eq!(S::from_f32(3.0).div_int(4), S::from_f32(0.75));
         assert_eq!(S::from_f32(300.0).clamp_to(S::from_f32(0.0), S::from_f32(255.0)), S::from_f32(255.0));
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth16(), 40000);
+        assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth32(), 40000 * 65536 + 32768);
+        assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth_f32(), 40000.5);
         assert_eq!(S::from_f32(0.5).recip().to_f32(), 2.0);
         assert_eq!(S::from_f32(4.0).rsqrt().to_f32(), 0.5);
         assert!((S::from_f32(2.0).rsqrt().to_f32() - core::f32::consts::FRAC_1_SQRT_2).abs() < 1e-4);
