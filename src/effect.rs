@@ -523,7 +523,7 @@ impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
                 }
                 if SPECULAR {
                     let h = normalize_s([l[0].add(view[0]), l[1].add(view[1]), l[2].add(view[2])]);
-                    let s = powi_s(dot_s(&n, &h).clamp_to(zero, S::from_f32(1.0)), u.power);
+                    let s = powi_s(dot_s(&n, &h).clamp_between(zero, S::from_f32(1.0)), u.power);
                     for k in 0..3 {
                         shine[k] = shine[k].add(c[k].mul(s));
                     }
@@ -538,8 +538,8 @@ impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
         }
         let one = S::from_f32(1.0);
         let channel = |k: usize, max: u8| {
-            let lit = u.color[k].mul(light[k].clamp_to(zero, one)).add(u.specular[k].mul(shine[k]));
-            lit.clamp_to(zero, one).mul(S::from_f32(max as f32)).add(S::from_f32(0.5)).channel()
+            let lit = u.color[k].mul(light[k].clamp_between(zero, one)).add(u.specular[k].mul(shine[k]));
+            lit.clamp_between(zero, one).mul(S::from_f32(max as f32)).add(S::from_f32(0.5)).channel()
         };
         C::from_channels(channel(0, C::MAX_R), channel(1, C::MAX_G), channel(2, C::MAX_B))
     }

@@ -303,7 +303,8 @@ impl<S: Interp> Plane<S> {
         let at = |ox: i32| match self.wide {
             Some((v, dx, dy)) => {
                 let unit = 1.0 / (1u32 << f) as f64;
-                S::from_f32((v as f64 + dx as f64 * (ox as f64 * unit) + dy as f64 * (oy as f64 * unit)) as f32).clamp_to(self.lo, self.hi)
+                S::from_f32((v as f64 + dx as f64 * (ox as f64 * unit) + dy as f64 * (oy as f64 * unit)) as f32)
+                    .clamp_between(self.lo, self.hi)
             }
             None => S::plane_clamped(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi),
         };
@@ -735,7 +736,7 @@ fn span<C, S, E, P, D, Z>(
         let w = q.recip();
         let mut out = *v;
         for i in 0..E::VARYINGS {
-            out[i] = v[i].mul(w).clamp_to(bounds[i].0, bounds[i].1);
+            out[i] = v[i].mul(w).clamp_between(bounds[i].0, bounds[i].1);
         }
         out
     };

@@ -11,7 +11,8 @@
 //! RAM (`size_of::<Renderer>()`, checked by a test):
 //!
 //! ```text
-//! W·STRIP·(size_of::<C>() + 2)     color and depth strips
+//! W·STRIP·(size_of::<C>() + Z)     color and depth strips (Z: 2 bytes
+//!                                  for Depth16, 4 for Depth32, DepthF32)
 //! + VERTS·(16 + 4·V)               transformed vertices
 //! + TRIS·12                        queued triangles
 //! + 2·H                            per-strip list heads

@@ -49,7 +49,7 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// `1 / self` for a positive value (zero or less gives a large value).
     fn recip(self) -> Self;
     /// `min(max(self, lo), hi)`.
-    fn clamp_to(self, lo: Self, hi: Self) -> Self;
+    fn clamp_between(self, lo: Self, hi: Self) -> Self;
     /// `1 / sqrt(self)` for a positive value; zero or less gives zero.
     fn rsqrt(self) -> Self;
     /// The integer part as a color channel. The caller keeps the value in
@@ -139,7 +139,7 @@ impl Interp for f32 {
         }
     }
     #[inline]
-    fn clamp_to(self, lo: Self, hi: Self) -> Self {
+    fn clamp_between(self, lo: Self, hi: Self) -> Self {
         if self > lo {
             if self < hi {
                 self
@@ -185,7 +185,7 @@ impl Interp for f32 {
     #[inline]
     #[allow(clippy::too_many_arguments)]
     fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self {
-        Self::plane_at(value0, dx, dy, ox, oy, f).clamp_to(lo, hi)
+        Self::plane_at(value0, dx, dy, ox, oy, f).clamp_between(lo, hi)
     }
 }
 
@@ -260,7 +260,7 @@ impl Interp for Fixed {
         Fixed::from_bits(((1i64 << 32) / root).min(i32::MAX as i64) as i32)
     }
     #[inline]
-    fn clamp_to(self, lo: Self, hi: Self) -> Self {
+    fn clamp_between(self, lo: Self, hi: Self) -> Self {
         self.clamp(lo, hi)
     }
     #[inline(always)]
@@ -316,7 +316,7 @@ mod tests {
         assert_eq!(S::from_f32(10.5).add_mul(d, 4), v);
         assert_eq!(v.sub(d), S::from_f32(11.25));
         assert_eq!(S::from_f32(3.0).div_int(4), S::from_f32(0.75));
-        assert_eq!(S::from_f32(300.0).clamp_to(S::from_f32(0.0), S::from_f32(255.0)), S::from_f32(255.0));
+        assert_eq!(S::from_f32(300.0).clamp_between(S::from_f32(0.0), S::from_f32(255.0)), S::from_f32(255.0));
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth16(), 40000);
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth32(), 40000 * 65536 + 32768);
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth_f32(), 40000.5);

@@ -256,3 +256,60 @@ fn depth_with_near_a_millionth_of_far_orders_surfaces_two_units_apart() {
     }
     all_modes!(case);
 }
+
+#[test]
+fn wide_depth_formats_order_surfaces_a_tenth_of_a_16_bit_unit_apart() {
+    // The setup above, with the two quads inside one 16-bit unit, a tenth
+    // of it apart: `Depth16` ties them (the first drawn stays), `Depth32`
+    // and `DepthF32` put the nearer in front in both orders, with either
+    // interpolation scalar. (Their limit is the `f32` window depth, whose
+    // step near z = 1 is 2^-24, about 0.004 of a 16-bit unit.)
+    fn case<S: Settings>(wide: bool) {
+        let (near, far) = (0.01, 10_000.0);
+        let camera = Camera { near: near as f32, far: far as f32, ..Camera::looking_at(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)) };
+        let draw = |quads: [(f64, Rgb888); 2]| {
+            let mut r: HostRenderer<Rgb888, 3, S> = HostRenderer::new(16, 12, 4, 16, 16, BG).unwrap();
+            let n = vec![Vec3::new(0.0, 0.0, -1.0); 4];
+            let i = vec![0u16, 1, 2, 0, 2, 3];
+            let ps: Vec<Vec<Vec3>> = quads
+                .iter()
+                .map(|&(d, _)| {
+                    let (d, e) = (d as f32, d as f32 * 0.7);
+                    vec![Vec3::new(-e, e, d), Vec3::new(e, e, d), Vec3::new(e, -e, d), Vec3::new(-e, -e, d)]
+                })
+                .collect();
+            let meshes: Vec<Mesh<'_>> = ps.iter().map(|p| Mesh::new(p, &n, &i).unwrap()).collect();
+            let ms = quads.map(|(_, c)| Material::new(VertexColor).with_color(c).with_cull(Cull::None));
+            let mut frame = r.begin_frame(&camera, &Lights::UNLIT, BG);
+            for (mesh, m) in meshes.iter().zip(&ms) {
+                frame.draw(mesh, &Mat4::IDENTITY, m).unwrap();
+            }
+            let mut img = Image::new(16, 12, BG);
+            let Ok(_) = frame.finish(&mut img);
+            img
+        };
+        let all = |img: &Image<Rgb888>, c: Rgb888| img.pixels.iter().all(|&p| p == c);
+        let name = format!("{} {}", mode::<S>(), std::any::type_name::<S>());
+        for d in [0.02, 0.2, 2.0, 20.0, 200.0] {
+            let unit = stored(d, near, far).floor();
+            // Red is nearer (a larger stored value), a tenth of a unit.
+            let (red, green) = (depth_at(unit + 0.7, near, far), depth_at(unit + 0.6, near, far));
+            assert!(red < green);
+            let first_green = draw([(green, Rgb888::GREEN), (red, Rgb888::RED)]);
+            let first_red = draw([(red, Rgb888::RED), (green, Rgb888::GREEN)]);
+            assert!(all(&first_red, Rgb888::RED), "{name} d {d}");
+            let want = if wide { Rgb888::RED } else { Rgb888::GREEN };
+            assert!(all(&first_green, want), "{name} d {d}: {:?}", first_green.pixels[0]);
+        }
+    }
+    use soft3d::math::Fixed;
+    use soft3d::{Depth16, Depth32, DepthF32, Precision};
+    case::<Precision<Fixed, 6, Depth16>>(false);
+    case::<Precision<f32, 6, Depth16>>(false);
+    case::<Precision<Fixed, 6, Depth32>>(true);
+    case::<Precision<f32, 6, Depth32>>(true);
+    case::<Precision<Fixed, 6, DepthF32>>(true);
+    case::<Precision<f32, 6, DepthF32>>(true);
+    case::<Precision<Fixed, 0, Depth32>>(true);
+    case::<Precision<f32, 8, DepthF32>>(true);
+}

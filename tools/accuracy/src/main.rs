@@ -23,7 +23,7 @@ use scenes::Scene;
 use soft3d::material::{Affine, PerPixel, PerSpan};
 use soft3d::math::Fixed;
 use soft3d::texture::{Bilinear, Nearest};
-use soft3d::Precision;
+use soft3d::{Depth16, Depth32, DepthF32, Precision};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -48,7 +48,7 @@ pub struct Config {
 
 /// Expands the shared list (`configs.rs`) into [`CONFIGS`].
 macro_rules! study_configs {
-    ($(($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $filter:ident, $phong:literal)),* $(,)?) => {
+    ($(($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $filter:ident, $phong:literal, $z:ident)),* $(,)?) => {
         /// Every configuration the study renders (`configs.rs`); the first
         /// is the baseline, the crate's defaults: `FixedPoint` (16.16, 6
         /// sub-pixel bits), exact perspective every 16 pixels, nearest
@@ -61,7 +61,7 @@ macro_rules! study_configs {
                 perspective: $persp,
                 filter: RefFilter::$filter,
                 phong: $phong,
-                render: render::render::<Precision<$scalar, $bits>, $p, $filter>,
+                render: render::render::<Precision<$scalar, $bits, $z>, $p, $filter>,
             }
         ),*];
     };
@@ -142,7 +142,13 @@ pub const CHOICES: &[Choice] = &[
     Choice {
         name: "Depth",
         scenes: &["zfight"],
-        options: &[("16-bit, fixed", "fixed-6-span16-nearest-gouraud"), ("16-bit, f32", "f32-6-span16-nearest-gouraud")],
+        options: &[
+            ("16-bit, fixed (default)", "fixed-6-span16-nearest-gouraud"),
+            ("32-bit (16.16 units), fixed", "fixed-6-span16-nearest-gouraud-d32"),
+            ("16-bit, f32", "f32-6-span16-nearest-gouraud"),
+            ("32-bit (16.16 units), f32", "f32-6-span16-nearest-gouraud-d32"),
+            ("f32 depth, f32", "f32-6-span16-nearest-gouraud-df32"),
+        ],
         model: false,
     },
     Choice {

@@ -335,12 +335,19 @@ fn recommendation(results: &Results, target: &Target) -> String {
         pct(t("f32-6-span16-nearest-phong", &["torus"], "m4f"), t(fixed, &["torus"], "m4f")),
         pct(t("fixed-6-span16-nearest-phong", &["torus"], "m4f"), t(fixed, &["torus"], "m4f"))
     );
+    let wrong = |key: &str| e(key, &["zfight"]).map_or("?".into(), |e| e.depth.to_string());
     let _ = writeln!(
         r,
-        "- **Depth: 16 bits is the only format so far**, and it cannot order the `zfight` planes: {} pixels show the \
-         wrong one in every configuration. Keep `far / near` small for distant detail; 32-bit and `f32` depth are \
-         not implemented yet.\n",
-        e(fixed, &["zfight"]).map_or(0, |e| e.depth)
+        "- **Depth: `Depth16` by default, `Depth32` where distant surfaces nearly touch.** On `zfight` 16 bits show \
+         the wrong plane at {} pixels; `Depth32` at {} with fixed-point interpolation (whose depth carries 15 \
+         fraction bits) and {} with `f32`, for {} per frame (M4F, fixed) and twice the depth strip's RAM (4 bytes \
+         a pixel instead of 2). `DepthF32` orders as `Depth32` does ({} pixels, f32) at the same size. On the other \
+         scenes no format changes a pixel.\n",
+        wrong(fixed),
+        wrong("fixed-6-span16-nearest-gouraud-d32"),
+        wrong("f32-6-span16-nearest-gouraud-d32"),
+        pct(t("fixed-6-span16-nearest-gouraud-d32", &["zfight"], "m4f"), t(fixed, &["zfight"], "m4f")),
+        wrong("f32-6-span16-nearest-gouraud-df32"),
     );
     r
 }
@@ -470,9 +477,10 @@ fn crops(
         )?;
     }
     // Depth fighting: where the baseline's visible plane is most often wrong.
-    if let (Some(fixed), Some(float), Some(r)) = (
+    if let (Some(fixed), Some(d32), Some(float), Some(r)) = (
         core("fixed-6-span16-nearest-gouraud", "zfight"),
-        core("f32-6-span16-nearest-gouraud", "zfight"),
+        core("fixed-6-span16-nearest-gouraud-d32", "zfight"),
+        core("f32-6-span16-nearest-gouraud-d32", "zfight"),
         references.get("zfight").and_then(|m| m.get(&(false, false))),
     ) {
         // Centered where the reference's planes cross (both in view).
@@ -488,8 +496,9 @@ fn crops(
         strip(
             &dir.join("depth.png"),
             &[
-                ("16-bit depth, fixed", Box::new(|i| Rgb888::from(fixed.color[i]))),
-                ("16-bit depth, f32", Box::new(|i| Rgb888::from(float.color[i]))),
+                ("Depth16, fixed", Box::new(|i| Rgb888::from(fixed.color[i]))),
+                ("Depth32, fixed", Box::new(|i| Rgb888::from(d32.color[i]))),
+                ("Depth32, f32", Box::new(|i| Rgb888::from(float.color[i]))),
                 ("reference", Box::new(|i| reference_color(r, i))),
             ],
             at,

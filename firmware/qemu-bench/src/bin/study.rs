@@ -19,7 +19,7 @@ use soft3d::mesh::Mesh;
 use soft3d::scenes::study::*;
 use soft3d::scenes::{headlight, FrameChecksum, DEMO_TRIANGLES, DEMO_VERTICES};
 use soft3d::texture::{Bilinear, Filter, Nearest, Repeat, Texture};
-use soft3d::{Camera, Lights, Material, Precision, Renderer, Settings};
+use soft3d::{Camera, Depth16, Depth32, DepthF32, Lights, Material, Precision, Renderer, Settings};
 use soft3d_qemu_bench::*;
 
 /// Phong needs six varyings.
@@ -98,12 +98,12 @@ const ONLY: Option<&str> = option_env!("SOFT3D_STUDY_ONLY");
 
 /// Expands the study's shared list into `run_all`.
 macro_rules! study_configs {
-    ($(($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $f:ty, $phong:literal)),* $(,)?) => {
+    ($(($key:literal, $interp:literal, $scalar:ty, $bits:literal, $persp:literal, $p:ty, $f:ty, $phong:literal, $z:ident)),* $(,)?) => {
         /// Times every configuration of the study.
         fn run_all(timer: &mut Timer) {
             $(
                 if ONLY.is_none_or(|only| only == $key) {
-                    config::<Precision<$scalar, $bits>, $p, $f>(timer, $key, $phong);
+                    config::<Precision<$scalar, $bits, $z>, $p, $f>(timer, $key, $phong);
                 }
             )*
         }
