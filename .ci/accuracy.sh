@@ -6,6 +6,8 @@ if cargo fmt --version >/dev/null 2>&1; then (cd tools/accuracy && cargo fmt -- 
 if target_installed thumbv6m-none-eabi && target_installed thumbv7em-none-eabihf; then
   command -v qemu-system-arm >/dev/null || apt_install qemu-system-arm
   bash scripts/accuracy.sh --quick
+  # A flat scene pays nothing for unused effects (fails beyond 1%).
+  bash scripts/effects-bench.sh
 else
   echo "note: rustup targets unavailable; accuracy check skipped"
 fi

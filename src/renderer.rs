@@ -395,6 +395,10 @@ where
     /// Errors leave the frame as it was; geometry that cannot be drawn
     /// (non-finite, off screen, back-facing) is skipped and counted in
     /// [`FrameStats`].
+    // Out of line: merged into a large caller (a firmware drawing every
+    // effect), its per-triangle loop lost registers and took 1.6% more of
+    // a flat frame than in a flat-only firmware (scripts/effects-bench.sh).
+    #[inline(never)]
     pub fn draw<E, P, D>(&mut self, mesh: &Mesh<'_>, model: &Mat4, material: &'m Material<E, P, D>) -> Result<(), DrawError>
     where
         E: Effect,

@@ -205,16 +205,18 @@ fn lighting_does_not_change_when_mesh_and_camera_move_together() {
 
 #[test]
 fn ram_formula_matches_size_of() {
-    fn formula(w: usize, h: usize, strip: usize, verts: usize, tris: usize, v: usize, color: usize, depth: usize) -> usize {
+    /// `pixel`: bytes of one color and one depth value.
+    fn formula(w: usize, h: usize, strip: usize, verts: usize, tris: usize, v: usize, pixel: (usize, usize)) -> usize {
+        let (color, depth) = pixel;
         let bytes = w * strip * (color + depth) + verts * (16 + 4 * v) + tris * 12 + 2 * h + color;
         bytes.div_ceil(4) * 4
     }
-    assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200>>(), formula(320, 240, 16, 1000, 1200, 3, 2, 2));
-    assert_eq!(size_of::<Renderer<Rgb565, 240, 240, 8, 600, 700, 0>>(), formula(240, 240, 8, 600, 700, 0, 2, 2));
-    assert_eq!(size_of::<Renderer<Rgb888, 128, 64, 64, 100, 100, 4>>(), formula(128, 64, 64, 100, 100, 4, size_of::<Rgb888>(), 2));
+    assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200>>(), formula(320, 240, 16, 1000, 1200, 3, (2, 2)));
+    assert_eq!(size_of::<Renderer<Rgb565, 240, 240, 8, 600, 700, 0>>(), formula(240, 240, 8, 600, 700, 0, (2, 2)));
+    assert_eq!(size_of::<Renderer<Rgb888, 128, 64, 64, 100, 100, 4>>(), formula(128, 64, 64, 100, 100, 4, (size_of::<Rgb888>(), 2)));
     // Wider depth formats: 4 bytes a pixel.
     type Deep = soft3d::Precision<soft3d::math::Fixed, 6, soft3d::Depth32>;
-    assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200, 3, Deep>>(), formula(320, 240, 16, 1000, 1200, 3, 2, 4));
+    assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200, 3, Deep>>(), formula(320, 240, 16, 1000, 1200, 3, (2, 4)));
     type Float = soft3d::Precision<f32, 6, soft3d::DepthF32>;
-    assert_eq!(size_of::<Renderer<Rgb565, 100, 50, 10, 10, 10, 5, Float>>(), formula(100, 50, 10, 10, 10, 5, 2, 4));
+    assert_eq!(size_of::<Renderer<Rgb565, 100, 50, 10, 10, 10, 5, Float>>(), formula(100, 50, 10, 10, 10, 5, (2, 4)));
 }

@@ -133,7 +133,7 @@ impl Interp for f32 {
     #[inline]
     fn rsqrt(self) -> Self {
         if self > 1e-30 {
-            1.0 / super::sqrt(self)
+            super::rsqrt(self)
         } else {
             0.0
         }

@@ -15,7 +15,7 @@ mod interp;
 mod matrix;
 mod vector;
 
-pub use elementary::{cos, sin, sqrt, tan};
+pub use elementary::{cos, rsqrt, sin, sqrt, tan};
 pub use fixed::Fixed;
 pub use interp::Interp;
 pub use matrix::{Mat3, Mat4};

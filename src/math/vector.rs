@@ -88,7 +88,7 @@ impl Vec3 {
     pub fn normalize_or_zero(self) -> Self {
         let len2 = self.length_squared();
         if len2 > 1e-30 && len2.is_finite() {
-            self * (1.0 / super::sqrt(len2))
+            self * super::rsqrt(len2)
         } else {
             Self::ZERO
         }

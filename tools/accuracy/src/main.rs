@@ -9,7 +9,13 @@
 //!
 //! `--quick` renders only the built-in scenes; `--check` writes nothing
 //! and fails if `docs/accuracy.md` differs from what it would write.
+//! Built with `--no-default-features --features micromath`, the tool
+//! renders the math-backend configurations only and writes their errors to
+//! the `--micromath` CSV (see `backend.rs`).
 
+mod backend;
+mod effects;
+mod host_time;
 mod metrics;
 mod reference;
 mod render;
@@ -152,6 +158,19 @@ pub const CHOICES: &[Choice] = &[
         model: false,
     },
     Choice {
+        name: "Math backend",
+        scenes: SHADED,
+        options: &[
+            ("libm, fixed, Gouraud (default)", "fixed-6-span16-nearest-gouraud"),
+            ("micromath, fixed, Gouraud", "fixed-6-span16-nearest-gouraud+micromath"),
+            ("libm, f32, Gouraud", "f32-6-span16-nearest-gouraud"),
+            ("micromath, f32, Gouraud", "f32-6-span16-nearest-gouraud+micromath"),
+            ("libm, f32, Phong", "f32-6-span16-nearest-phong"),
+            ("micromath, f32, Phong", "f32-6-span16-nearest-phong+micromath"),
+        ],
+        model: true,
+    },
+    Choice {
         name: "Combinations",
         scenes: SHADED,
         options: &[
@@ -179,6 +198,19 @@ pub struct Results {
     /// Checksum of each color image (`soft3d::scenes::FrameChecksum`), to
     /// compare with the emulated targets'.
     pub checksums: BTreeMap<(&'static str, &'static str), u32>,
+    /// Each backend function's largest error: `(libm, micromath)`.
+    pub functions: Vec<(&'static str, (f64, f64))>,
+    /// Instructions per call on the emulated cores: `(function, backend, core)`.
+    pub calls: BTreeMap<(String, String, String), u32>,
+    /// Host nanoseconds per frame (`benches/study.rs`): `(key, scene)`.
+    pub host: host_time::HostTimes,
+    /// The effects benchmark (`scripts/effects-bench.sh`).
+    pub effects: Vec<effects::Row>,
+}
+
+/// Every configuration key: the study's, then the micromath twins.
+pub fn all_keys() -> impl Iterator<Item = &'static str> {
+    CONFIGS.iter().map(|c| c.key).chain(backend::PAIRS.iter().map(|p| p.1))
 }
 
 /// The benchmark's frame checksum of an image.
@@ -197,6 +229,9 @@ struct Args {
     assets: PathBuf,
     out: PathBuf,
     target: PathBuf,
+    micromath: PathBuf,
+    calls: PathBuf,
+    criterion: Option<PathBuf>,
 }
 
 fn parse_args() -> Result<Args, String> {
@@ -207,6 +242,9 @@ fn parse_args() -> Result<Args, String> {
         assets: root.join("../shared/assets"),
         out: root.join("docs"),
         target: root.join("docs/accuracy/target.csv"),
+        micromath: root.join("docs/accuracy/micromath.csv"),
+        calls: root.join("docs/accuracy/mathfns.csv"),
+        criterion: None,
     };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
@@ -217,10 +255,29 @@ fn parse_args() -> Result<Args, String> {
             "--assets" => a.assets = PathBuf::from(value("--assets")?),
             "--out" => a.out = PathBuf::from(value("--out")?),
             "--target" => a.target = PathBuf::from(value("--target")?),
+            "--micromath" => a.micromath = PathBuf::from(value("--micromath")?),
+            "--calls" => a.calls = PathBuf::from(value("--calls")?),
+            "--criterion" => a.criterion = Some(PathBuf::from(value("--criterion")?)),
             other => return Err(format!("unknown option {other}")),
         }
     }
     Ok(a)
+}
+
+/// Host times: fresh from criterion's output with `--criterion DIR` (and
+/// then written to `docs/accuracy/host.csv`), else the committed CSV.
+fn host_times(args: &Args) -> host_time::HostTimes {
+    let csv = args.out.join("accuracy/host.csv");
+    let Some(dir) = &args.criterion else { return host_time::read_csv(&csv) };
+    let mut times = host_time::from_criterion(dir);
+    // Keys no longer studied may linger in criterion's directory.
+    times.retain(|(key, _), _| CONFIGS.iter().any(|c| c.key == key));
+    if !args.check {
+        if let Err(e) = host_time::write_csv(&csv, &times) {
+            eprintln!("accuracy: {e}");
+        }
+    }
+    times
 }
 
 fn main() -> ExitCode {
@@ -255,7 +312,8 @@ fn main() -> ExitCode {
             }
         }
         let wrap = scene.textures.iter().map(|t| (t.width as f64, t.height as f64)).next();
-        for c in CONFIGS {
+        // The micromath build renders the math-backend configurations only.
+        for c in CONFIGS.iter().filter(|c| !backend::MICROMATH || backend::twin(c.key).is_some()) {
             let img = (c.render)(scene, c.phong);
             let same = &refs[&(c.phong, c.filter == RefFilter::Bilinear)];
             let ideal = &refs[&(true, true)];
@@ -265,7 +323,48 @@ fn main() -> ExitCode {
         }
         eprintln!("{}: {} configurations", scene.name, CONFIGS.len());
     }
-    let results = Results { errors, scenes: scenes.iter().map(|s| (s.name, s.about)).collect(), notes, checksums };
+    if backend::MICROMATH {
+        let rows: Vec<backend::Row> = errors
+            .iter()
+            .filter_map(|(&(key, scene), &e)| {
+                Some(backend::Row { key: backend::twin(key)?, scene: scene.into(), errors: e, checksum: checksums[&(key, scene)] })
+            })
+            .collect();
+        return match backend::write(&args.micromath, &rows) {
+            Ok(()) => {
+                eprintln!("accuracy: wrote {} (micromath)", args.micromath.display());
+                ExitCode::SUCCESS
+            }
+            Err(e) => {
+                eprintln!("accuracy: {e}");
+                ExitCode::FAILURE
+            }
+        };
+    }
+    // The micromath twins, from the micromath build's CSV.
+    let mut missing = 0;
+    for row in backend::read(&args.micromath) {
+        match scenes.iter().find(|s| s.name == row.scene) {
+            Some(s) => {
+                errors.insert((row.key, s.name), row.errors);
+                checksums.insert((row.key, s.name), row.checksum);
+            }
+            None => missing += 1,
+        }
+    }
+    if missing > 0 {
+        eprintln!("accuracy: {missing} micromath rows for scenes not rendered here, ignored");
+    }
+    let results = Results {
+        errors,
+        scenes: scenes.iter().map(|s| (s.name, s.about)).collect(),
+        notes,
+        checksums,
+        functions: backend::function_errors(),
+        calls: backend::read_calls(&args.calls),
+        host: host_times(&args),
+        effects: effects::read(&args.out.join("accuracy/effects.csv")),
+    };
     let target = report::read_target(&args.target);
     let parity = report::parity(&results, &target);
     for line in &parity.mismatches {

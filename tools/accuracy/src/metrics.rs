@@ -35,6 +35,47 @@ pub struct Errors {
     pub pixels: usize,
 }
 
+impl Errors {
+    /// Comma-separated fields, exact (`{:?}` round-trips every `f64`).
+    pub fn to_fields(self) -> String {
+        let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:?}"));
+        format!(
+            "{:?},{},{},{:?},{},{},{},{},{}",
+            self.psnr,
+            self.max,
+            self.p99,
+            self.mean,
+            self.coverage,
+            self.depth,
+            opt(self.uv_max),
+            opt(self.uv_p99),
+            self.pixels
+        )
+    }
+
+    /// Parses what [`Errors::to_fields`] wrote (`FIELDS` values).
+    pub fn from_fields(f: &[&str]) -> Option<Self> {
+        if f.len() != Self::FIELDS {
+            return None;
+        }
+        let opt = |s: &str| if s.is_empty() { Ok(None) } else { s.parse().map(Some) };
+        Some(Errors {
+            psnr: f[0].parse().ok()?,
+            max: f[1].parse().ok()?,
+            p99: f[2].parse().ok()?,
+            mean: f[3].parse().ok()?,
+            coverage: f[4].parse().ok()?,
+            depth: f[5].parse().ok()?,
+            uv_max: opt(f[6]).ok()?,
+            uv_p99: opt(f[7]).ok()?,
+            pixels: f[8].parse().ok()?,
+        })
+    }
+
+    /// Fields [`Errors::to_fields`] writes.
+    pub const FIELDS: usize = 9;
+}
+
 /// The exact color as the display shows it.
 fn quantized(c: [f64; 3]) -> Rgb888 {
     let q = |v: f64, max: f64| (v.clamp(0.0, 1.0) * max).round() as u8;
@@ -127,5 +168,11 @@ mod tests {
         let e = compare(&core, &reference, Some((8.0, 8.0)));
         assert_eq!((e.max, e.coverage, e.depth), (4, 1, 0));
         assert!((e.uv_max.unwrap() - 0.125).abs() < 1e-12, "{:?}", e.uv_max);
+        // Written and read back exactly.
+        let line = e.to_fields();
+        let back = Errors::from_fields(&line.split(',').collect::<Vec<_>>()).unwrap();
+        assert_eq!(back.to_fields(), line);
+        assert_eq!((back.psnr.to_bits(), back.uv_p99), (e.psnr.to_bits(), e.uv_p99));
+        assert!(Errors::from_fields(&["1"; 8]).is_none());
     }
 }

@@ -4,7 +4,7 @@ use crate::metrics::Errors;
 use crate::reference::RefImage;
 use crate::render::CoreImages;
 use crate::scenes::{HEIGHT, WIDTH};
-use crate::{Results, CHOICES, CONFIGS};
+use crate::{all_keys, backend, Results, CHOICES, CONFIGS};
 use embedded_graphics::mono_font::{ascii::FONT_6X10, MonoTextStyle};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics::prelude::*;
@@ -135,11 +135,19 @@ fn uv(v: Option<f64>) -> String {
     v.map_or("–".into(), |v| format!("{v:.3}"))
 }
 
-fn row(label: &str, e: &Errors, ideal: Option<&Errors>, m4f: Option<f64>, m0: Option<f64>) -> String {
+/// Mean host time per frame of a configuration over `scenes`, in
+/// milliseconds, if every one was measured.
+fn host_ms(results: &Results, key: &str, scenes: &[&str]) -> Option<f64> {
+    let v: Option<Vec<f64>> = scenes.iter().map(|s| results.host.get(&(key.to_string(), s.to_string())).copied()).collect();
+    v.filter(|v| !v.is_empty()).map(|v| v.iter().sum::<f64>() / v.len() as f64 / 1e6)
+}
+
+fn row(label: &str, e: &Errors, ideal: Option<&Errors>, m4f: Option<f64>, m0: Option<f64>, host: Option<f64>) -> String {
     let t = |v: Option<f64>| v.map_or("not measured".into(), thousands);
     let ideal = ideal.map_or(String::new(), |i| format!(" {} / {:.2} |", psnr(i.psnr), i.mean));
+    let host = host.map_or("–".into(), |ms| format!("{ms:.2}"));
     format!(
-        "| {label} | {} / {:.2} |{ideal} {} / {} | {} | {} | {} | {} | {} |\n",
+        "| {label} | {} / {:.2} |{ideal} {} / {} | {} | {} | {} | {} | {} | {host} |\n",
         psnr(e.psnr),
         e.mean,
         e.max,
@@ -181,8 +189,9 @@ pub fn markdown(results: &Results, target: &Target, parity: &Parity, quick: bool
     let _ = writeln!(d, "# What accuracy costs\n");
     let _ = writeln!(
         d,
-        "Regenerate: `bash scripts/accuracy.sh` (emulator figures into `docs/accuracy/target.csv`, then \
-         `cargo run --release --manifest-path tools/accuracy/Cargo.toml`, which renders every configuration and \
+        "Regenerate: `bash scripts/accuracy.sh` (emulator figures into `docs/accuracy/target.csv`, the micromath \
+         builds, the math functions per call, `scripts/effects-bench.sh`, the host's `cargo bench --bench study`, \
+         then `cargo run --release --manifest-path tools/accuracy/Cargo.toml`, which renders every configuration and \
          rewrites this file and `docs/accuracy/`). `bash scripts/accuracy.sh --quick` checks that the tables of the \
          built-in scenes are current (CI runs it).\n"
     );
@@ -212,16 +221,29 @@ pub fn markdown(results: &Results, target: &Target, parity: &Parity, quick: bool
         let ideal_rule = if c.model { " ---: |" } else { "" };
         let _ = writeln!(
             d,
-            "| option | PSNR dB / mean error |{ideal} max / p99 error | coverage px | depth px | UV p99 (texels) | M4F instr / frame | M0+ instr / frame |"
+            "| option | PSNR dB / mean error |{ideal} max / p99 error | coverage px | depth px | UV p99 (texels) | M4F instr / frame | M0+ instr / frame | host ms / frame |"
         );
-        let _ = writeln!(d, "| --- | ---: |{ideal_rule} ---: | ---: | ---: | ---: | ---: | ---: |");
+        let _ = writeln!(d, "| --- | ---: |{ideal_rule} ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
         for (label, key) in c.options {
             let Some(e) = combined(results, key, &scenes, false) else { continue };
             let i = if c.model { combined(results, key, &scenes, true) } else { None };
-            let _ = write!(d, "{}", row(label, &e, i.as_ref(), time(target, key, &scenes, "m4f"), time(target, key, &scenes, "m0")));
+            let _ = write!(
+                d,
+                "{}",
+                row(
+                    label,
+                    &e,
+                    i.as_ref(),
+                    time(target, key, &scenes, "m4f"),
+                    time(target, key, &scenes, "m0"),
+                    host_ms(results, key, &scenes)
+                )
+            );
         }
         let _ = writeln!(d);
     }
+    let _ = writeln!(d, "{}", functions(results));
+    let _ = writeln!(d, "{}", crate::effects::markdown(&results.effects, thousands));
     let _ = writeln!(d, "## Error against time\n");
     if target.is_empty() {
         let _ = writeln!(d, "No emulator figures yet (`docs/accuracy/target.csv` is missing).\n");
@@ -238,15 +260,15 @@ pub fn markdown(results: &Results, target: &Target, parity: &Parity, quick: bool
         let _ = writeln!(d, "{SCENE_BEGIN} {name} -->\n### `{name}`\n\n{about}.\n");
         let _ = writeln!(d, "| configuration | PSNR dB | mean / max / p99 error | coverage px | depth px | UV max / p99 (texels) | PSNR vs ideal | M4F instr / frame | M0+ instr / frame |");
         let _ = writeln!(d, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-        for c in CONFIGS {
-            let Some((e, i)) = results.errors.get(&(c.key, *name)) else { continue };
+        for key in all_keys() {
+            let Some((e, i)) = results.errors.get(&(key, *name)) else { continue };
             let t = |core: &str| {
-                target.get(&(c.key.to_string(), name.to_string(), core.to_string())).map_or("–".into(), |v| thousands(*v as f64))
+                target.get(&(key.to_string(), name.to_string(), core.to_string())).map_or("–".into(), |v| thousands(*v as f64))
             };
             let _ = writeln!(
                 d,
                 "| `{}` | {} | {:.2} / {} / {} | {} | {} | {} / {} | {} | {} | {} |",
-                c.key,
+                key,
                 psnr(e.psnr),
                 e.mean,
                 e.max,
@@ -349,7 +371,57 @@ fn recommendation(results: &Results, target: &Target) -> String {
         pct(t("fixed-6-span16-nearest-gouraud-d32", &["zfight"], "m4f"), t(fixed, &["zfight"], "m4f")),
         wrong("f32-6-span16-nearest-gouraud-df32"),
     );
+    let mm = |key: &'static str| backend::twin(key).unwrap_or(key);
+    let worst_root = results.functions.iter().filter(|f| f.0.contains("sqrt")).map(|f| f.1 .1).fold(0.0, f64::max);
+    let _ = writeln!(
+        r,
+        "- **Math backend: `libm` (the default).** micromath's functions are bit tricks and short polynomials, off by \
+         0.1% (`sin`, `cos`) to {:.1}% (`sqrt`): its `tan` moves the projection ({} pixels covered differently on the \
+         shaded scenes) and its roots misnormalize normals. Fixed-point Gouraud loses {}, `f32` Phong {}, to save {} \
+         and {} per frame (M4F). Its trigonometry is 25 to 50 times cheaper per call on the M4F (libm's runs `f64` \
+         steps in software), but the pipeline calls it per draw call, not per vertex.\n",
+        worst_root * 100.0,
+        e(mm(fixed), &shaded).map_or("?".into(), |e| e.coverage.to_string()),
+        db(e(mm(fixed), &shaded), e(fixed, &shaded)),
+        db(i(mm("f32-6-span16-nearest-phong"), &shaded), i("f32-6-span16-nearest-phong", &shaded)),
+        pct(t(mm(fixed), &shaded, "m4f"), t(fixed, &shaded, "m4f")),
+        pct(t(mm("f32-6-span16-nearest-phong"), &shaded, "m4f"), t("f32-6-span16-nearest-phong", &shaded, "m4f")),
+    );
     r
+}
+
+/// The math functions alone: error and instructions per call.
+fn functions(results: &Results) -> String {
+    let mut d = String::from("## Math functions\n\n");
+    let _ = writeln!(
+        d,
+        "The functions soft3d takes from its math backend, each alone: largest error over 100,001 arguments against `f64` \
+         (relative for the roots and `tan`, absolute for `sin` and `cos`; host), and instructions per call on the \
+         emulated cores (`firmware/qemu-bench/src/bin/mathfns.rs`, the call included, the loop subtracted). \
+         `pow` is not among them: highlights use integer powers.\n"
+    );
+    let _ = writeln!(d, "| function | used for | libm error | micromath error | libm M4F / M0+ instr | micromath M4F / M0+ instr |");
+    let _ = writeln!(d, "| --- | --- | ---: | ---: | ---: | ---: |");
+    let calls = |name: &str, b: &str| {
+        let get = |core: &str| {
+            results.calls.get(&(name.to_string(), b.to_string(), core.to_string())).map_or("?".into(), |n| thousands(*n as f64))
+        };
+        format!("{} / {}", get("m4f"), get("m0"))
+    };
+    for f in backend::functions() {
+        let Some((_, (l, m))) = results.functions.iter().find(|(n, _)| *n == f.name) else { continue };
+        let _ = writeln!(
+            d,
+            "| {} | {} | {:.1e} | {:.1e} | {} | {} |",
+            f.name,
+            f.used_for,
+            l,
+            m,
+            calls(f.name, "libm"),
+            calls(f.name, "micromath")
+        );
+    }
+    d
 }
 
 /// Writes the document, the plot and the crops.

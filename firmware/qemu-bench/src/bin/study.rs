@@ -66,8 +66,8 @@ fn measure<S: Settings, P: Perspective, F: Filter>(
     let total = timer.instructions();
     let sink = out.ticks * INSTRUCTIONS_PER_TICK;
     match total {
-        Some(n) => hprintln!("study,{},{},{},{},{:08x}", key, scene, TARGET, n - sink, out.inner.sum),
-        None => hprintln!("study,{},{},{},overflow,{:08x}", key, scene, TARGET, out.inner.sum),
+        Some(n) => hprintln!("study,{}{},{},{},{},{:08x}", key, BACKEND, scene, TARGET, n - sink, out.inner.sum),
+        None => hprintln!("study,{}{},{},{},overflow,{:08x}", key, BACKEND, scene, TARGET, out.inner.sum),
     }
 }
 
@@ -92,9 +92,13 @@ where
     measure::<S, P, F>(timer, &mut renderer, key, "zfight", (ZFIGHT_CAMERA, ZFIGHT_LIGHTS), &planes, phong);
 }
 
-/// Built with `SOFT3D_STUDY_ONLY=key` in the environment, only that
-/// configuration runs (for `scripts/qemu-profile.py`).
+/// Built with `SOFT3D_STUDY_ONLY=key1,key2` in the environment, only those
+/// configurations run (`scripts/qemu-profile.py`, and the micromath build).
 const ONLY: Option<&str> = option_env!("SOFT3D_STUDY_ONLY");
+
+/// Appended to the keys of a build with soft3d's `micromath` backend
+/// (`--no-default-features --features micromath`), as the study names them.
+const BACKEND: &str = if cfg!(feature = "libm") { "" } else { "+micromath" };
 
 /// Expands the study's shared list into `run_all`.
 macro_rules! study_configs {
@@ -102,7 +106,7 @@ macro_rules! study_configs {
         /// Times every configuration of the study.
         fn run_all(timer: &mut Timer) {
             $(
-                if ONLY.is_none_or(|only| only == $key) {
+                if ONLY.is_none_or(|only| only.split(',').any(|k| k == $key)) {
                     config::<Precision<$scalar, $bits, $z>, $p, $f>(timer, $key, $phong);
                 }
             )*
