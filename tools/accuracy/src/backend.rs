@@ -17,6 +17,9 @@ use crate::metrics::Errors;
 use std::collections::BTreeMap;
 use std::path::Path;
 
+/// Appended to a configuration's key for its micromath twin.
+pub const SUFFIX: &str = "+micromath";
+
 /// Whether this build renders with micromath.
 pub const MICROMATH: bool = cfg!(not(feature = "libm"));
 
