@@ -80,14 +80,17 @@ mod tests {
 
     #[test]
     fn backend_is_close_to_std() {
+        // libm is exact to an ulp or two; micromath's roots are bit tricks
+        // (up to about 6% off) and its sin/cos about 0.1%.
+        let (trig, root) = if cfg!(feature = "libm") { (1e-6, 4e-7) } else { (2e-3, 0.07) };
         for i in -50..50 {
             let x = i as f32 * 0.173;
-            assert!((sin(x) - x.sin()).abs() < 2e-3, "sin({x})");
-            assert!((cos(x) - x.cos()).abs() < 2e-3, "cos({x})");
+            assert!((sin(x) - x.sin()).abs() < trig, "sin({x})");
+            assert!((cos(x) - x.cos()).abs() < trig, "cos({x})");
             let s = x.abs();
-            assert!((sqrt(s) - s.sqrt()).abs() <= 0.07 * s.sqrt().max(1.0), "sqrt({s})");
+            assert!((sqrt(s) - s.sqrt()).abs() <= root * s.sqrt().max(1.0), "sqrt({s})");
             if s > 0.0 {
-                assert!((rsqrt(s) * s.sqrt() - 1.0).abs() <= 0.07, "rsqrt({s})");
+                assert!((rsqrt(s) * s.sqrt() - 1.0).abs() <= root, "rsqrt({s})");
             }
         }
     }

@@ -18,7 +18,7 @@ use soft3d::host::Image;
 use soft3d::math::{Mat4, Vec3};
 use soft3d::mesh::Mesh;
 use soft3d::tri::TriVertex;
-use soft3d::{Camera, Cull, HostRenderer, Lights, Material, Settings};
+use soft3d::{Camera, Cull, FrameStats, HostRenderer, Lights, Material, Settings};
 
 /// Calls `$f::<S>()` for fixed point and `f32` at 0, 2, 4, 6 and 8
 /// sub-pixel bits.
@@ -202,6 +202,31 @@ fn depth_at(s: f64, near: f64, far: f64) -> f64 {
     near / (1.0 - z * (far - near) / far)
 }
 
+/// Two frame-filling quads facing `camera` (at the origin, looking down
+/// +z) at view depths `quads[k].0`, drawn in order with the depth test on
+/// into a 16×12 frame.
+fn two_quads<S: Settings>(camera: &Camera, quads: [(f64, Rgb888); 2]) -> (Image<Rgb888>, FrameStats) {
+    let mut r: HostRenderer<Rgb888, 3, S> = HostRenderer::new(16, 12, 4, 16, 16, BG).unwrap();
+    let n = vec![Vec3::new(0.0, 0.0, -1.0); 4];
+    let i = vec![0u16, 1, 2, 0, 2, 3];
+    let ps: Vec<Vec<Vec3>> = quads
+        .iter()
+        .map(|&(d, _)| {
+            let (d, e) = (d as f32, d as f32 * 0.7);
+            vec![Vec3::new(-e, e, d), Vec3::new(e, e, d), Vec3::new(e, -e, d), Vec3::new(-e, -e, d)]
+        })
+        .collect();
+    let meshes: Vec<Mesh<'_>> = ps.iter().map(|p| Mesh::new(p, &n, &i).unwrap()).collect();
+    let ms = quads.map(|(_, c)| Material::new(VertexColor).with_color(c).with_cull(Cull::None));
+    let mut frame = r.begin_frame(camera, &Lights::UNLIT, BG);
+    for (mesh, m) in meshes.iter().zip(&ms) {
+        frame.draw(mesh, &Mat4::IDENTITY, m).unwrap();
+    }
+    let mut img = Image::new(16, 12, BG);
+    let Ok(stats) = frame.finish(&mut img);
+    (img, stats)
+}
+
 #[test]
 fn depth_with_near_a_millionth_of_far_orders_surfaces_two_units_apart() {
     // Camera at the origin looking down +z, near 0.01, far 10,000; two
@@ -212,24 +237,7 @@ fn depth_with_near_a_millionth_of_far_orders_surfaces_two_units_apart() {
         let (near, far) = (0.01, 10_000.0);
         let camera = Camera { near: near as f32, far: far as f32, ..Camera::looking_at(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)) };
         let draw = |quads: [(f64, Rgb888); 2]| {
-            let mut r: HostRenderer<Rgb888, 3, S> = HostRenderer::new(16, 12, 4, 16, 16, BG).unwrap();
-            let n = vec![Vec3::new(0.0, 0.0, -1.0); 4];
-            let i = vec![0u16, 1, 2, 0, 2, 3];
-            let ps: Vec<Vec<Vec3>> = quads
-                .iter()
-                .map(|&(d, _)| {
-                    let (d, e) = (d as f32, d as f32 * 0.7);
-                    vec![Vec3::new(-e, e, d), Vec3::new(e, e, d), Vec3::new(e, -e, d), Vec3::new(-e, -e, d)]
-                })
-                .collect();
-            let meshes: Vec<Mesh<'_>> = ps.iter().map(|p| Mesh::new(p, &n, &i).unwrap()).collect();
-            let ms = quads.map(|(_, c)| Material::new(VertexColor).with_color(c).with_cull(Cull::None));
-            let mut frame = r.begin_frame(&camera, &Lights::UNLIT, BG);
-            for (mesh, m) in meshes.iter().zip(&ms) {
-                frame.draw(mesh, &Mat4::IDENTITY, m).unwrap();
-            }
-            let mut img = Image::new(16, 12, BG);
-            let Ok(stats) = frame.finish(&mut img);
+            let (img, stats) = two_quads::<S>(&camera, quads);
             assert_eq!(stats.queued, 4, "{}", mode::<S>());
             img
         };
@@ -267,27 +275,7 @@ fn wide_depth_formats_order_surfaces_a_tenth_of_a_16_bit_unit_apart() {
     fn case<S: Settings>(wide: bool) {
         let (near, far) = (0.01, 10_000.0);
         let camera = Camera { near: near as f32, far: far as f32, ..Camera::looking_at(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)) };
-        let draw = |quads: [(f64, Rgb888); 2]| {
-            let mut r: HostRenderer<Rgb888, 3, S> = HostRenderer::new(16, 12, 4, 16, 16, BG).unwrap();
-            let n = vec![Vec3::new(0.0, 0.0, -1.0); 4];
-            let i = vec![0u16, 1, 2, 0, 2, 3];
-            let ps: Vec<Vec<Vec3>> = quads
-                .iter()
-                .map(|&(d, _)| {
-                    let (d, e) = (d as f32, d as f32 * 0.7);
-                    vec![Vec3::new(-e, e, d), Vec3::new(e, e, d), Vec3::new(e, -e, d), Vec3::new(-e, -e, d)]
-                })
-                .collect();
-            let meshes: Vec<Mesh<'_>> = ps.iter().map(|p| Mesh::new(p, &n, &i).unwrap()).collect();
-            let ms = quads.map(|(_, c)| Material::new(VertexColor).with_color(c).with_cull(Cull::None));
-            let mut frame = r.begin_frame(&camera, &Lights::UNLIT, BG);
-            for (mesh, m) in meshes.iter().zip(&ms) {
-                frame.draw(mesh, &Mat4::IDENTITY, m).unwrap();
-            }
-            let mut img = Image::new(16, 12, BG);
-            let Ok(_) = frame.finish(&mut img);
-            img
-        };
+        let draw = |quads: [(f64, Rgb888); 2]| two_quads::<S>(&camera, quads).0;
         let all = |img: &Image<Rgb888>, c: Rgb888| img.pixels.iter().all(|&p| p == c);
         let name = format!("{} {}", mode::<S>(), std::any::type_name::<S>());
         for d in [0.02, 0.2, 2.0, 20.0, 200.0] {

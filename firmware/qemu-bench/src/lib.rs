@@ -105,6 +105,34 @@ pub fn calibrate(timer: &mut Timer) -> Option<u32> {
     Some(((2 * LOOPS as u64 + ticks as u64 / 2) / ticks.max(1) as u64) as u32)
 }
 
+/// Starts SysTick as the instruction counter (free-running over 24 bits,
+/// core clock), calibrates it and prints the
+/// `calibration,instructions_per_tick,N,assumed,40` line the scripts check.
+pub fn start_timer() -> Timer {
+    let Some(p) = cortex_m::Peripherals::take() else {
+        hprintln!("calibration,failed");
+        exit()
+    };
+    let mut syst = p.SYST;
+    syst.set_clock_source(cortex_m::peripheral::syst::SystClkSource::Core);
+    syst.set_reload(0x00FF_FFFF);
+    syst.enable_counter();
+    let mut timer = Timer(syst);
+    match calibrate(&mut timer) {
+        Some(f) => hprintln!("calibration,instructions_per_tick,{},assumed,{}", f, INSTRUCTIONS_PER_TICK),
+        None => hprintln!("calibration,failed"),
+    }
+    timer
+}
+
+/// Ends the emulation successfully.
+pub fn exit() -> ! {
+    debug::exit(debug::EXIT_SUCCESS);
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
+
 /// Wraps the checksum sink and accumulates the instructions spent inside
 /// it, so that the frame's own cost can exclude them.
 pub struct TimedSink {

@@ -14,9 +14,8 @@
 #![no_std]
 #![no_main]
 
-use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::entry;
-use cortex_m_semihosting::{debug, hprintln};
+use cortex_m_semihosting::hprintln;
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
@@ -105,21 +104,9 @@ fn measure_with<S: Settings>(
 
 #[entry]
 fn main() -> ! {
-    let p = cortex_m::Peripherals::take().unwrap();
-    let mut syst = p.SYST;
-    syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(0x00FF_FFFF);
-    syst.enable_counter();
-    let mut timer = Timer(syst);
-    match calibrate(&mut timer) {
-        Some(f) => hprintln!("calibration,instructions_per_tick,{},assumed,{}", f, INSTRUCTIONS_PER_TICK),
-        None => hprintln!("calibration,failed"),
-    }
+    let mut timer = start_timer();
     hprintln!("scene,mode,target,instructions,sink_instructions,queued,checksum,geometry_instructions,stack,renderer_ram");
     run::<soft3d::FixedPoint>(&mut timer, "fixed");
     run::<soft3d::FloatingPoint>(&mut timer, "f32");
-    debug::exit(debug::EXIT_SUCCESS);
-    loop {
-        cortex_m::asm::wfi();
-    }
+    exit()
 }

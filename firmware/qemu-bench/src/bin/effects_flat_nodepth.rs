@@ -5,19 +5,7 @@
 #![no_std]
 #![no_main]
 
-use cortex_m_rt::entry;
-use soft3d::effect::Flat;
-use soft3d::material::{Affine, DepthOff};
-
 #[path = "effects/common.rs"]
 mod common;
 
-#[entry]
-fn main() -> ! {
-    let mut timer = common::start_timer();
-    let renderer = common::static_renderer!(0);
-    common::report_renderer::<0>("flat-nodepth-only");
-    let flat = common::materials::<Flat, Affine, DepthOff>(Flat);
-    common::measure(&mut timer, renderer, "flat-nodepth-only", "flat-nodepth", |frame| common::draw_scene(frame, &flat));
-    common::exit()
-}
+common::flat_only_firmware!(0, soft3d::material::DepthOff, "flat-nodepth-only", "flat-nodepth");

@@ -6,19 +6,7 @@
 #![no_std]
 #![no_main]
 
-use cortex_m_rt::entry;
-use soft3d::effect::Flat;
-use soft3d::material::{Affine, DepthLess};
-
 #[path = "effects/common.rs"]
 mod common;
 
-#[entry]
-fn main() -> ! {
-    let mut timer = common::start_timer();
-    let renderer = common::static_renderer!(6);
-    common::report_renderer::<6>("flat-only-v6");
-    let flat = common::materials::<Flat, Affine, DepthLess>(Flat);
-    common::measure(&mut timer, renderer, "flat-only-v6", "flat", |frame| common::draw_scene(frame, &flat));
-    common::exit()
-}
+common::flat_only_firmware!(6, soft3d::material::DepthLess, "flat-only-v6", "flat");

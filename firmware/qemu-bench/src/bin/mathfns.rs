@@ -11,9 +11,8 @@
 #![no_main]
 
 use core::hint::black_box;
-use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::entry;
-use cortex_m_semihosting::{debug, hprintln};
+use cortex_m_semihosting::hprintln;
 use micromath::F32Ext;
 use soft3d_qemu_bench::*;
 
@@ -67,12 +66,7 @@ fn measure(timer: &mut Timer, name: &str, backend: &str, trig: bool, f: fn(f32) 
 
 #[entry]
 fn main() -> ! {
-    let p = cortex_m::Peripherals::take().unwrap();
-    let mut syst = p.SYST;
-    syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(0x00FF_FFFF);
-    syst.enable_counter();
-    let mut timer = Timer(syst);
+    let mut timer = start_timer();
     measure(&mut timer, "sqrt", "libm", false, libm::sqrtf);
     measure(&mut timer, "sqrt", "micromath", false, F32Ext::sqrt);
     measure(&mut timer, "inverse sqrt", "libm", false, |x| 1.0 / libm::sqrtf(x));
@@ -83,8 +77,5 @@ fn main() -> ! {
     measure(&mut timer, "cos", "micromath", true, F32Ext::cos);
     measure(&mut timer, "tan", "libm", true, |x| libm::tanf(x * 0.35));
     measure(&mut timer, "tan", "micromath", true, |x| F32Ext::tan(x * 0.35));
-    debug::exit(debug::EXIT_SUCCESS);
-    loop {
-        cortex_m::asm::wfi();
-    }
+    exit()
 }

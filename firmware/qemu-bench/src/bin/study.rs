@@ -7,9 +7,8 @@
 #![no_std]
 #![no_main]
 
-use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::entry;
-use cortex_m_semihosting::{debug, hprintln};
+use cortex_m_semihosting::hprintln;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
 use soft3d::effect::{Effect, Gouraud, Phong, Textured};
@@ -118,19 +117,7 @@ include!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../tools/accuracy/configs.rs")
 
 #[entry]
 fn main() -> ! {
-    let p = cortex_m::Peripherals::take().unwrap();
-    let mut syst = p.SYST;
-    syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(0x00FF_FFFF);
-    syst.enable_counter();
-    let mut timer = Timer(syst);
-    match calibrate(&mut timer) {
-        Some(f) => hprintln!("calibration,instructions_per_tick,{},assumed,{}", f, INSTRUCTIONS_PER_TICK),
-        None => hprintln!("calibration,failed"),
-    }
+    let mut timer = start_timer();
     run_all(&mut timer);
-    debug::exit(debug::EXIT_SUCCESS);
-    loop {
-        cortex_m::asm::wfi();
-    }
+    exit()
 }

@@ -12,8 +12,7 @@
 //! calls, before `finish` rasterizes), and each firmware one
 //! `renderer,build,core,bytes` line (`size_of` of its renderer, a `static`).
 
-use cortex_m::peripheral::syst::SystClkSource;
-use cortex_m_semihosting::{debug, hprintln};
+use cortex_m_semihosting::hprintln;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
 use soft3d::effect::Effect;
@@ -22,7 +21,8 @@ use soft3d::math::{Mat4, Vec3};
 use soft3d::mesh::Mesh;
 use soft3d::scenes::{demo_camera, demo_lights, FrameChecksum, CUBE, SPHERE, TORUS};
 use soft3d::{Frame, Material, Renderer};
-use soft3d_qemu_bench::{calibrate, TimedSink, Timer, INSTRUCTIONS_PER_TICK, TARGET};
+pub use soft3d_qemu_bench::{exit, start_timer};
+use soft3d_qemu_bench::{TimedSink, Timer, INSTRUCTIONS_PER_TICK, TARGET};
 
 /// The numeric settings each core would ship with (the accuracy study's
 /// recommendation): `f32` interpolation where there is an FPU, fixed point
@@ -60,6 +60,29 @@ macro_rules! static_renderer {
     }};
 }
 pub(crate) use static_renderer;
+
+/// The whole `main` of a firmware in which the flat effect is the only one
+/// that exists: a renderer storing `$v` varyings, the scene drawn with
+/// `Material<Flat, Affine, $depth>`, one timed frame printed as build
+/// `$build`, frame `$scene`. Expects this module as `common` at the crate
+/// root. (Unused by `effects_all`, which includes this module too.)
+#[allow(unused_macros)]
+macro_rules! flat_only_firmware {
+    ($v:literal, $depth:ty, $build:literal, $scene:literal) => {
+        #[cortex_m_rt::entry]
+        fn main() -> ! {
+            use $crate::common;
+            let mut timer = common::start_timer();
+            let renderer = common::static_renderer!($v);
+            common::report_renderer::<$v>($build);
+            let flat = common::materials::<soft3d::effect::Flat, soft3d::material::Affine, $depth>(soft3d::effect::Flat);
+            common::measure(&mut timer, renderer, $build, $scene, |frame| common::draw_scene(frame, &flat));
+            common::exit()
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use flat_only_firmware;
 
 /// The background of every frame (and the renderer's fill).
 pub const BACKGROUND: Rgb565 = Rgb565::BLACK;
@@ -100,22 +123,6 @@ where
     }
 }
 
-/// Starts SysTick as the instruction counter (see `soft3d_qemu_bench`)
-/// and prints the calibration line the script checks.
-pub fn start_timer() -> Timer {
-    let p = cortex_m::Peripherals::take().unwrap();
-    let mut syst = p.SYST;
-    syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(0x00FF_FFFF);
-    syst.enable_counter();
-    let mut timer = Timer(syst);
-    match calibrate(&mut timer) {
-        Some(f) => hprintln!("calibration,instructions_per_tick,{},assumed,{}", f, INSTRUCTIONS_PER_TICK),
-        None => hprintln!("calibration,failed"),
-    }
-    timer
-}
-
 /// Prints the renderer's size, what the `static` holds.
 pub fn report_renderer<const V: usize>(build: &str) {
     hprintln!("renderer,{},{},{}", build, TARGET, core::mem::size_of::<EffectsRenderer<V>>());
@@ -142,13 +149,5 @@ pub fn measure<'m, const V: usize>(
     match (total, geometry) {
         (Some(n), Some(g)) => hprintln!("effects,{},{},{},{},{},{:08x},{}", build, scene, TARGET, n - sink, g, out.inner.sum, stats.queued),
         _ => hprintln!("effects,{},{},{},overflow,overflow,{:08x},{}", build, scene, TARGET, out.inner.sum, stats.queued),
-    }
-}
-
-/// Ends the emulation successfully.
-pub fn exit() -> ! {
-    debug::exit(debug::EXIT_SUCCESS);
-    loop {
-        cortex_m::asm::wfi();
     }
 }
