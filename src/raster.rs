@@ -21,7 +21,7 @@
 
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
-use crate::math::Interp;
+use crate::math::{mul_wide, Interp};
 use crate::settings::DepthFormat;
 
 /// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
@@ -120,7 +120,7 @@ pub fn signed_area2<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c:
     // each product is one 32×32→64 multiply.
     let (bx, by) = (b.x - a.x, b.y - a.y);
     let (cx, cy) = (c.x - a.x, c.y - a.y);
-    bx as i64 * cy as i64 - by as i64 * cx as i64
+    mul_wide(bx, cy) - mul_wide(by, cx)
 }
 
 /// First pixel row whose center is at or below snapped y.
@@ -172,7 +172,7 @@ impl EdgeWalker {
         let (dx, dy) = (bx - ax, by - ay);
         let d = dy << f;
         let yc = (row << f) + half;
-        let m = (ax - half) as i64 * dy as i64 + dx as i64 * (yc - ay) as i64;
+        let m = mul_wide(ax - half, dy) + mul_wide(dx, yc - ay);
         let (bound, err) = div_ceil_rem(m, d);
         // One row adds dx * 2^F to m: dx / dy pixels.
         Self { bound, err, step_q: dx.div_euclid(dy), step_r: dx.rem_euclid(dy) << f, d }
@@ -290,9 +290,9 @@ impl<S: Interp> Plane<S> {
     /// three vertices are.
     #[inline(always)]
     fn safe(&self, shape: &Shape, f: u32) -> bool {
-        let within = |ox, oy| S::plane_within(self.at_a, self.dx, self.dy, ox, oy, f, self.lo, self.hi);
         // `&`, not `&&`: straight-line code, no branch per test.
-        self.wide.is_none() & within(0, 0) & within(shape.ox1, shape.oy1) & within(shape.ox2, shape.oy2)
+        self.wide.is_none()
+            & S::plane_within(self.at_a, self.dx, self.dy, (shape.ox1, shape.oy1), (shape.ox2, shape.oy2), f, self.lo, self.hi)
     }
 
     /// Start value and step of a span of `len` pixels whose first pixel
@@ -419,6 +419,13 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     }
     // With y down, a negative area puts the middle vertex left of the long edge.
     let t = Sorted { a, b, c, mid_left: area < 0, y_top, y_mid: first_row_at_or_below(b.y, subpixel_bits), y_bot };
+    let width = target.width as i32;
+    // Coverage first: a small triangle often covers no pixel center at all,
+    // and then needs no planes.
+    let mut rows = Rows::new(&t, target.y0, target.rows, width, f);
+    let Some(mut span_at) = rows.next_span() else {
+        return;
+    };
     let shape = Shape::new(a, b, c, f);
     let planes = Planes::<S, V>::new::<C, E, P>(&shape, &t, effect);
     // With a wrapping scalar, a plane whose rounded gradients leave its
@@ -439,7 +446,6 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     // are the origin's plus whole steps right and down (exactly what
     // stepping gives). Rows count from the triangle's first row, not the
     // strip's, so `f32` rounding is the same whatever the strip height.
-    let width = target.width as i32;
     let min_x = a.x.min(b.x).min(c.x);
     let x_base = (min_x >> f).clamp(0, width - 1);
     let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_top << f) + (1 << (f - 1)) - a.y);
@@ -453,7 +459,8 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
         v_dx[i] = vary[i].dx;
         v_dy[i] = vary[i].dy;
     }
-    walk_rows(target, &t, f, |target, y, x0, x1| {
+    loop {
+        let (y, x0, x1) = span_at;
         let (color, depths) = target.span(y, x0, x1);
         let (k, j) = (x0 - x_base, y - y_top);
         let mut vals = [S::default(); MAX_VARYINGS];
@@ -463,7 +470,11 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
         let zs = z0.add_mul(z.dy, j).add_mul(z.dx, k);
         let qs = if P::CORRECT { q0.add_mul(q.dy, j).add_mul(q.dx, k) } else { q0 };
         span::<C, S, E, P, D, Z>(color, depths, effect, uniforms, zs, z.dx, vals, &v_dx, qs, q.dx, face, &bounds);
-    });
+        match rows.next_span() {
+            Some(next) => span_at = next,
+            None => return,
+        }
+    }
 }
 
 /// [`rasterize`] for a triangle whose stepped values could leave their
@@ -504,7 +515,8 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
         }
     }
     let a = t.a;
-    walk_rows(target, t, f, |target, y, x0, x1| {
+    let mut rows = Rows::new(t, target.y0, target.rows, target.width as i32, f);
+    while let Some((y, x0, x1)) = rows.next_span() {
         let (color, depths) = target.span(y, x0, x1);
         let (px, py) = ((x0 << f) + (1 << (f - 1)) - a.x, (y << f) + (1 << (f - 1)) - a.y);
         let len = x1 - x0;
@@ -516,38 +528,57 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
             (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
         }
         span::<C, S, E, P, D, Z>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
-    });
+    }
 }
 
-/// Walks a sorted triangle's rows within the strip with exact edge DDAs
-/// and calls `row(target, y, x0, x1)` for each non-empty span of pixels
-/// `x0..x1` (clipped to the strip's width).
-#[inline(always)]
-fn walk_rows<C, Z, const V: usize>(
-    target: &mut StripTarget<'_, C, Z>,
-    t: &Sorted<'_, V>,
+/// Walks a sorted triangle's rows within a strip with exact edge DDAs,
+/// yielding each non-empty span of pixels `x0..x1` (clipped to the strip's
+/// width) as `(y, x0, x1)`.
+struct Rows<'t, const V: usize> {
+    t: &'t Sorted<'t, V>,
+    long: EdgeWalker,
+    short: EdgeWalker,
+    y: i32,
+    y_end: i32,
+    /// The row where the short side turns the corner at the middle vertex
+    /// (`i32::MIN` if the walk starts below it).
+    y_switch: i32,
+    width: i32,
     f: u32,
-    mut row: impl FnMut(&mut StripTarget<'_, C, Z>, i32, i32, i32),
-) {
-    let (a, b, c) = (t.a, t.b, t.c);
-    let y_start = t.y_top.max(target.y0);
-    let y_end = t.y_bot.min(target.y0 + target.rows);
-    let width = target.width as i32;
-    let mut long = EdgeWalker::new(a.x, a.y, c.x, c.y, y_start, f);
-    let mut short =
-        if y_start < t.y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y_start, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y_start, f) };
-    for y in y_start..y_end {
-        if y == t.y_mid && t.y_mid > y_start {
-            short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, f);
+}
+
+impl<'t, const V: usize> Rows<'t, V> {
+    #[inline(always)]
+    fn new(t: &'t Sorted<'t, V>, y0: i32, rows: i32, width: i32, f: u32) -> Self {
+        let (a, b, c) = (t.a, t.b, t.c);
+        let y = t.y_top.max(y0);
+        let long = EdgeWalker::new(a.x, a.y, c.x, c.y, y, f);
+        let short = if y < t.y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y, f) };
+        let y_switch = if y < t.y_mid { t.y_mid } else { i32::MIN };
+        Self { t, long, short, y, y_end: t.y_bot.min(y0 + rows), y_switch, width, f }
+    }
+
+    /// The next non-empty span.
+    #[inline(always)]
+    fn next_span(&mut self) -> Option<(i32, i32, i32)> {
+        while self.y < self.y_end {
+            let y = self.y;
+            if y == self.y_switch {
+                // Below the middle vertex the short side is its lower edge.
+                let (b, c) = (self.t.b, self.t.c);
+                self.short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, self.f);
+            }
+            let (left, right) = if self.t.mid_left { (&self.short, &self.long) } else { (&self.long, &self.short) };
+            let x0 = left.bound.clamp(0, self.width);
+            let x1 = right.bound.clamp(0, self.width);
+            self.long.step();
+            self.short.step();
+            self.y += 1;
+            if x0 < x1 {
+                return Some((y, x0, x1));
+            }
         }
-        let (left, right) = if t.mid_left { (&short, &long) } else { (&long, &short) };
-        let x0 = left.bound.clamp(0, width);
-        let x1 = right.bound.clamp(0, width);
-        if x0 < x1 {
-            row(target, y, x0, x1);
-        }
-        long.step();
-        short.step();
+        None
     }
 }
 

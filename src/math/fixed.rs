@@ -32,9 +32,24 @@ impl Fixed {
     /// Nearest representable value; saturates, NaN gives zero.
     #[inline]
     pub fn from_f32(v: f32) -> Self {
-        // `as` saturates and maps NaN to 0.
-        let scaled = v * (1u32 << Self::FRAC_BITS) as f32;
-        Self((scaled + if scaled < 0.0 { -0.5 } else { 0.5 }) as i32)
+        if super::HARD_FLOAT {
+            // `as` saturates and maps NaN to 0.
+            let scaled = v * (1u32 << Self::FRAC_BITS) as f32;
+            Self((scaled + if scaled < 0.0 { -0.5 } else { 0.5 }) as i32)
+        } else {
+            Self(scaled_from_bits(v, Self::FRAC_BITS as i32, true))
+        }
+    }
+
+    /// `v` times 2^16 truncated toward zero, saturating, NaN giving zero
+    /// (the raw bits of a gradient).
+    #[inline]
+    pub fn truncate_f32(v: f32) -> Self {
+        if super::HARD_FLOAT {
+            Self((v * (1u32 << Self::FRAC_BITS) as f32) as i32)
+        } else {
+            Self(scaled_from_bits(v, Self::FRAC_BITS as i32, false))
+        }
     }
 
     /// The value as `f32`.
@@ -77,6 +92,77 @@ impl Fixed {
     }
 }
 
+/// `v * 2^k` converted to `i32` from the bits of `v`, with no float
+/// operation: for a core without an FPU, where the multiply, the rounding
+/// add and the saturating conversion of the float formulas are a library
+/// call each (the conversion four: three comparisons and the conversion).
+/// Gives exactly what the float formulas give: truncated toward zero
+/// (`round == false`, like `(v * 2^k) as i32`), or rounded half away from
+/// zero through an `f32` addition (`round == true`, like
+/// `(v * 2^k ± 0.5) as i32`, whose addition rounds ties to even once the
+/// product reaches 2^23). Saturating; NaN gives zero. For `0 <= k <= 32`.
+#[inline]
+fn scaled_from_bits(v: f32, k: i32, round: bool) -> i32 {
+    let bits = v.to_bits();
+    let negative = bits >> 31 != 0;
+    let exponent = ((bits >> 23) & 0xFF) as i32;
+    let fraction = bits & 0x7F_FFFF;
+    if exponent == 0xFF && fraction != 0 {
+        return 0;
+    }
+    // |v * 2^k| = mantissa * 2^shift (zero and subnormals give a shift far
+    // below -24: they convert to 0).
+    let mantissa = fraction | 0x80_0000;
+    let shift = exponent - 150 + k;
+    let magnitude = if exponent == 0 {
+        0
+    } else if shift >= 8 {
+        // 2^31 or more (infinity included): saturated.
+        return if negative { i32::MIN } else { i32::MAX };
+    } else if shift > 0 {
+        // An integer whose ulp is 2 or more: adding 0.5 rounds back to it.
+        mantissa << shift
+    } else if !round {
+        if shift >= -24 {
+            mantissa >> -shift
+        } else {
+            0
+        }
+    } else if shift >= -25 {
+        // `x + 0.5` in units of 2^shift is `mantissa + 2^(s-1)` (below
+        // 2^26), which the addition rounds to 24 significant bits, ties to
+        // even, before the conversion truncates it.
+        let s = (-shift + 1) as u32;
+        let (mantissa, s) = (mantissa << 1, s); // one more bit: s >= 1 even at shift 0
+        let sum = mantissa + (1 << (s - 1));
+        let dropped = if sum >= 1 << 26 {
+            3
+        } else if sum >= 1 << 25 {
+            2
+        } else if sum >= 1 << 24 {
+            1
+        } else {
+            0
+        };
+        let sum = if dropped > 0 {
+            let (kept, rest, half) = (sum >> dropped, sum & ((1 << dropped) - 1), 1 << (dropped - 1));
+            let up = rest > half || (rest == half && kept & 1 == 1);
+            (kept + up as u32) << dropped
+        } else {
+            sum
+        };
+        sum >> s
+    } else {
+        // Below a quarter: `x + 0.5` stays below 1.
+        0
+    };
+    if negative {
+        (magnitude as i32).wrapping_neg()
+    } else {
+        magnitude as i32
+    }
+}
+
 impl fmt::Debug for Fixed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "Fixed({})", self.to_f32())
@@ -92,6 +178,34 @@ mod tests {
         for r in (1..=70_000i32).chain([1 << 16, 1 << 20, 3 << 20, i32::MAX, -1, -7, -(1 << 16), i32::MIN, 0]) {
             let expect = if r == 0 { i32::MAX as i64 } else { ((1i64 << 32) / r as i64).clamp(i32::MIN as i64, i32::MAX as i64) };
             assert_eq!(Fixed::from_bits(r).saturating_recip().to_bits() as i64, expect, "1 / {r}");
+        }
+    }
+
+    #[test]
+    fn conversions_from_the_bits_equal_the_float_formulas() {
+        let float_round = |v: f32| {
+            let scaled = v * 65536.0;
+            (scaled + if scaled < 0.0 { -0.5 } else { 0.5 }) as i32
+        };
+        let float_trunc = |v: f32| (v * 65536.0) as i32;
+        let check = |bits: u32| {
+            let v = f32::from_bits(bits);
+            assert_eq!(scaled_from_bits(v, 16, true), float_round(v), "round {v:e} ({bits:#x})");
+            assert_eq!(scaled_from_bits(v, 16, false), float_trunc(v), "truncate {v:e} ({bits:#x})");
+        };
+        // Every exponent with a spread of mantissas (the low bits odd and
+        // even), both signs, and the values around each rounding boundary.
+        for sign in [0u32, 1 << 31] {
+            for exponent in 0..=255u32 {
+                for fraction in (0..0x80_0000u32).step_by(4099).chain([0, 1, 2, 3, 0x40_0000, 0x40_0001, 0x7F_FFFE, 0x7F_FFFF]) {
+                    check(sign | exponent << 23 | fraction);
+                }
+            }
+        }
+        for v in [0.5f32 / 65536.0, 1.5 / 65536.0, 2.5 / 65536.0, 128.0, 128.00002, 255.99998, 32767.5, 32768.0, -32768.0, 8388607.5] {
+            for b in v.to_bits() - 2..=v.to_bits() + 2 {
+                check(b);
+            }
         }
     }
 

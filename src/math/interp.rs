@@ -70,9 +70,11 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// `(ox, oy)` units of `2^-f` pixels from its origin (wrapping in
     /// fixed point: exactly what stepping from the origin would give).
     fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self;
-    /// Whether the plane's exact value at that offset is in `[lo, hi]`.
+    /// Whether the plane's exact values at its origin and at the two
+    /// offsets `b` and `c` (a triangle's other vertices) are all in
+    /// `[lo, hi]`.
     #[allow(clippy::too_many_arguments)]
-    fn plane_within(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> bool;
+    fn plane_within(value0: Self, dx: Self, dy: Self, b: (i32, i32), c: (i32, i32), f: u32, lo: Self, hi: Self) -> bool;
     /// The plane's exact value at that offset, clamped to `[lo, hi]`.
     #[allow(clippy::too_many_arguments)]
     fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self;
@@ -178,9 +180,9 @@ impl Interp for f32 {
     }
     #[inline]
     #[allow(clippy::too_many_arguments)]
-    fn plane_within(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> bool {
-        let v = Self::plane_at(value0, dx, dy, ox, oy, f);
-        v >= lo && v <= hi
+    fn plane_within(value0: Self, dx: Self, dy: Self, b: (i32, i32), c: (i32, i32), f: u32, lo: Self, hi: Self) -> bool {
+        let within = |v: f32| v >= lo && v <= hi;
+        within(value0) & within(Self::plane_at(value0, dx, dy, b.0, b.1, f)) & within(Self::plane_at(value0, dx, dy, c.0, c.1, f))
     }
     #[inline]
     #[allow(clippy::too_many_arguments)]
@@ -210,12 +212,13 @@ impl Interp for Fixed {
     }
     #[inline(always)]
     fn gradient(v: f32) -> Self {
-        // `as` truncates, saturates and maps NaN to 0.
-        Fixed::from_bits((v * (1u32 << Fixed::FRAC_BITS) as f32) as i32)
+        Fixed::truncate_f32(v)
     }
     #[inline(always)]
     fn is_wide(self) -> bool {
-        self.to_bits().unsigned_abs() >= 32_000 << Fixed::FRAC_BITS
+        // `|g| >= LIMIT` as one add and one unsigned compare.
+        const LIMIT: u32 = 32_000 << Fixed::FRAC_BITS;
+        (self.to_bits() as u32).wrapping_add(LIMIT - 1) > 2 * LIMIT - 2
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -290,10 +293,18 @@ impl Interp for Fixed {
     }
     #[inline]
     #[allow(clippy::too_many_arguments)]
-    fn plane_within(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> bool {
-        // One unsigned compare: `lo <= v <= hi` as `v - lo <= hi - lo`.
-        let v = Self::plane_exact(value0, dx, dy, ox, oy, f);
-        (v.wrapping_sub(lo.to_bits() as i64) as u64) <= (hi.to_bits() as i64 - lo.to_bits() as i64) as u64
+    fn plane_within(value0: Self, dx: Self, dy: Self, b: (i32, i32), c: (i32, i32), f: u32, lo: Self, hi: Self) -> bool {
+        // `lo <= value0 + floor(sum / 2^f) <= hi` is `low <= sum < high`
+        // with `low = (lo - value0) * 2^f`, `high = (hi - value0 + 1) * 2^f`:
+        // per offset two multiplies and one unsigned compare, no shift.
+        let (v0, lo, hi) = (value0.to_bits() as i64, lo.to_bits() as i64, hi.to_bits() as i64);
+        let low = (lo - v0) << f;
+        let width = (((hi - lo + 1) << f) - 1) as u64;
+        let within = |(ox, oy): (i32, i32)| {
+            let sum = dx.to_bits() as i64 * ox as i64 + dy.to_bits() as i64 * oy as i64;
+            (sum.wrapping_sub(low) as u64) <= width
+        };
+        (((v0 - lo) as u64) <= (hi - lo) as u64) & within(b) & within(c)
     }
     #[inline]
     #[allow(clippy::too_many_arguments)]
@@ -327,8 +338,13 @@ mod tests {
         // Plane 10 + 2x - y at (3.5, 1.25) pixels with 4 sub-pixel bits (f = 5).
         let (v0, dx, dy) = (S::from_f32(10.0), S::from_f32(2.0), S::from_f32(-1.0));
         assert_eq!(S::plane_at(v0, dx, dy, 112, 40, 5), S::from_f32(15.75));
-        assert!(S::plane_within(v0, dx, dy, 112, 40, 5, S::from_f32(15.0), S::from_f32(15.75)));
-        assert!(!S::plane_within(v0, dx, dy, 112, 40, 5, S::from_f32(0.0), S::from_f32(15.5)));
+        let (lo, hi) = (S::from_f32(10.0), S::from_f32(15.75));
+        assert!(S::plane_within(v0, dx, dy, (112, 40), (32, 0), 5, lo, hi));
+        assert!(!S::plane_within(v0, dx, dy, (112, 40), (32, 0), 5, lo, S::from_f32(15.5)));
+        assert!(!S::plane_within(v0, dx, dy, (32, 0), (112, 40), 5, lo, S::from_f32(15.5)));
+        assert!(!S::plane_within(v0, dx, dy, (0, 32), (32, 0), 5, S::from_f32(9.5), hi)); // 9 at (0, 1)
+        assert!(!S::plane_within(v0, dx, dy, (32, 0), (32, 0), 5, S::from_f32(10.5), hi));
+        // the origin is below
     }
 
     #[test]
@@ -342,6 +358,37 @@ mod tests {
         // A steep plane evaluated 2^29 units away: the exact value is far
         // outside i32 even though stepping wraps; the check must say so.
         let (v0, dx) = (Fixed::from_f32(100.0), Fixed::from_f32(1000.0));
-        assert!(!Fixed::plane_within(v0, dx, Fixed::ZERO, 1 << 29, 0, 5, Fixed::ZERO, Fixed::from_f32(255.0)));
+        assert!(!Fixed::plane_within(v0, dx, Fixed::ZERO, (1 << 29, 0), (0, 0), 5, Fixed::ZERO, Fixed::from_f32(255.0)));
+    }
+
+    #[test]
+    fn fixed_range_check_equals_evaluating_the_plane() {
+        // The shift-free check against the plain one, on values that
+        // straddle the bounds (floor of negative sums included).
+        let mut seed = 12345u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        for _ in 0..20_000 {
+            let v0 = Fixed::from_bits((next() % 4000) as i32 - 2000);
+            let (dx, dy) = (Fixed::from_bits((next() % 600) as i32 - 300), Fixed::from_bits((next() % 600) as i32 - 300));
+            let (ox, oy) = ((next() % 200) as i32 - 100, (next() % 200) as i32 - 100);
+            let (lo, hi) = (Fixed::from_bits(-1000 + (next() % 50) as i32), Fixed::from_bits(1000 - (next() % 50) as i32));
+            let f = next() % 9;
+            let v = Fixed::plane_exact(v0, dx, dy, ox, oy, f);
+            let plain = (lo.to_bits() as i64..=hi.to_bits() as i64).contains(&v) && (lo..=hi).contains(&v0);
+            assert_eq!(Fixed::plane_within(v0, dx, dy, (ox, oy), (0, 0), f, lo, hi), plain, "{v0:?} {dx:?} {dy:?} {ox} {oy} {f}");
+        }
+    }
+
+    #[test]
+    fn wide_gradients_are_those_of_32000_or_more() {
+        let wide = |bits: i32| Fixed::from_bits(bits).is_wide();
+        let limit = 32_000 << 16;
+        assert!(!wide(0) && !wide(limit - 1) && !wide(-(limit - 1)));
+        assert!(wide(limit) && wide(-limit) && wide(i32::MAX) && wide(i32::MIN));
     }
 }

@@ -26,3 +26,54 @@ pub use vector::{Vec2, Vec3, Vec4};
 /// operation is a library call. A few spots pick a different but
 /// equivalent formulation by it (a constant, so the other costs nothing).
 pub(crate) const HARD_FLOAT: bool = !cfg!(target_arch = "arm") || cfg!(target_abi = "eabihf");
+
+/// `a * b` as `i64`, exactly. Where the core has a 32×32→64-bit multiply
+/// (every target but ARMv6-M) this is that one instruction. ARMv6-M has
+/// only the low 32 bits of a product, and the compiler calls a 64×64-bit
+/// library routine for it; four 16×16-bit products are a fraction of
+/// that (the setup of every triangle evaluates a few dozen of them).
+#[inline(always)]
+pub fn mul_wide(a: i32, b: i32) -> i64 {
+    if cfg!(soft3d_no_long_multiply) {
+        mul_wide_by_halves(a, b)
+    } else {
+        a as i64 * b as i64
+    }
+}
+
+/// [`mul_wide`] from 16×16-bit products, for cores without a long multiply.
+#[inline(always)]
+fn mul_wide_by_halves(a: i32, b: i32) -> i64 {
+    // a = ah * 2^16 + al with ah signed and al in [0, 2^16); every partial
+    // product then fits 32 bits: |ah * bh| <= 2^30, |ah * bl| < 2^31,
+    // al * bl < 2^32.
+    let (ah, al, bh, bl) = (a >> 16, a & 0xFFFF, b >> 16, b & 0xFFFF);
+    let high = (ah * bh) as i64;
+    let middle = (ah * bl) as i64 + (al * bh) as i64;
+    let low = (al as u32 * bl as u32) as i64;
+    (high << 32) + (middle << 16) + low
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn products_by_halves_are_exact() {
+        let edges = [0, 1, -1, 0xFFFF, 0x10000, -0x10000, 0x7FFF_FFFF, i32::MIN, i32::MIN + 1, 12345, -98765];
+        for &a in &edges {
+            for &b in &edges {
+                assert_eq!(mul_wide_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
+            }
+        }
+        let mut x = 0x9E37_79B9u32;
+        for _ in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            let (a, b) = (x as i32, x.rotate_left(11) as i32 >> (x % 31));
+            assert_eq!(mul_wide_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
+        }
+        assert_eq!(mul_wide(-7, 6), -42);
+    }
+}
