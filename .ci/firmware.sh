@@ -6,17 +6,14 @@
 # active; uses its target_installed. Everything runs in subshells so the
 # working directory is left alone.
 
-# Builds firmware/$1 for rustup target $2, adding the target if needed;
-# skips the board with a note when the target cannot be had.
+# Builds firmware/$1 for target $2: with rustup's target (added if
+# needed) it is also linted; without, scripts/fw-cargo.sh builds it with
+# Debian's rustc-web and a `core` built from rust-web-src.
 firmware_board() {
   local board=$1 target=$2
   echo "-- firmware/$board ($target)"
   if ! target_installed "$target"; then
     rustup target add "$target" || true
-  fi
-  if ! target_installed "$target"; then
-    echo "note: rustup target $target could not be installed; firmware/$board not built"
-    return 0
   fi
   (
     cd "firmware/$board"
@@ -25,9 +22,15 @@ firmware_board() {
     else
       echo "note: rustfmt not installed, skipping the format check of firmware/$board"
     fi
-    cargo clippy --release -- -D warnings
-    cargo build --release
     local elf="target/$target/release/soft3d-$board"
+    if target_installed "$target"; then
+      cargo clippy --release -- -D warnings
+      cargo build --release
+    else
+      echo "note: rustup target $target unavailable; building with -Zbuild-std, not linted"
+      ../../scripts/fw-cargo.sh "$target" build --release
+      elf="target/build-std/$target/release/soft3d-$board"
+    fi
     test -s "$elf"
     if command -v llvm-size >/dev/null 2>&1; then
       # Berkeley format: text (code, read-only data, vectors) and the .data

@@ -7,10 +7,12 @@
 
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::RgbColor;
+use soft3d::effect::Effect;
 use soft3d::host::scene::HostScene;
+use soft3d::material::{Material, PerPixel, PerSpan, Perspective};
 use soft3d::scenes::{
-    demo_camera, demo_lights, draw_bench, headlight, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES,
-    FILE_SCENES, WHITE,
+    demo_camera, demo_lights, draw_bench, headlight, textured, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES,
+    FILE_SCENES, TEXTURED_SCENES, WHITE,
 };
 use soft3d::{HostRenderer, Settings};
 
@@ -27,15 +29,32 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
         println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
     }
     for (name, scene) in files {
-        let camera = scene.camera_or_default();
-        let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
-        for m in &scene.meshes {
-            frame.draw(&m.mesh(), &m.model, &WHITE).expect("the scene fits its buffers");
-        }
-        let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
-        let Ok(_) = frame.finish(&mut sink);
-        println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
+        file_scene(&mut r, name, mode, scene, &WHITE);
     }
+    // The monkey with its texture, as the firmware bakes it.
+    if let Some((_, monkey)) = files.iter().find(|(name, _)| *name == "monkey") {
+        let texture = monkey.textures.first().expect("monkey.babylon names Suzanne.jpg").texture();
+        file_scene(&mut r, TEXTURED_SCENES[0], mode, monkey, &textured::<PerPixel>(texture));
+        file_scene(&mut r, TEXTURED_SCENES[1], mode, monkey, &textured::<PerSpan<32>>(texture));
+    }
+}
+
+/// Renders a file scene with its camera and `material` and prints its line.
+fn file_scene<S: Settings, E: Effect, P: Perspective>(
+    r: &mut HostRenderer<Rgb565, DEMO_VARYINGS, S>,
+    name: &str,
+    mode: &str,
+    scene: &HostScene,
+    material: &Material<E, P>,
+) {
+    let camera = scene.camera_or_default();
+    let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
+    for m in &scene.meshes {
+        frame.draw(&m.mesh(), &m.model, material).expect("the scene fits its buffers");
+    }
+    let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
+    let Ok(_) = frame.finish(&mut sink);
+    println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
 }
 
 fn main() {

@@ -21,7 +21,9 @@
 # (on a board it is a static); stack is the peak stack of the frame, by
 # stack painting; flash is the whole benchmark firmware (text + data).
 # "fps@150MHz" assumes one instruction per cycle: an estimate, no more.
-# Needs qemu-system-arm and the two rustup targets (.ci/run installs them).
+# Needs qemu-system-arm and the two rustup targets, or Debian's rustc-web
+# and rust-web-src where rustup cannot add them (scripts/fw-cargo.sh; .ci/run
+# installs whichever it can).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode_arg=${1:-}
@@ -35,8 +37,8 @@ host=$(cargo run -q --release --example bench_host --features simulator)
 rows=""
 declare -A flash
 for t in thumbv7em-none-eabihf thumbv6m-none-eabi; do
-  (cd firmware/qemu-bench && cargo build -q --release --target "$t")
-  out=$(cd firmware/qemu-bench && timeout 600 cargo run -q --release --target "$t")
+  (cd firmware/qemu-bench && ../../scripts/fw-cargo.sh "$t" build -q --release)
+  out=$(cd firmware/qemu-bench && timeout 600 ../../scripts/fw-cargo.sh "$t" run -q --release)
   cal=$(grep '^calibration,' <<<"$out")
   if [ "$(cut -d, -f3 <<<"$cal")" != 40 ]; then
     echo "instructions per tick calibration is not 40: $cal" >&2
@@ -44,6 +46,10 @@ for t in thumbv7em-none-eabihf thumbv6m-none-eabi; do
   fi
   core=$([ "$t" = thumbv6m-none-eabi ] && echo m0 || echo m4f)
   elf=firmware/qemu-bench/target/$t/release/soft3d-qemu-bench
+  # Where scripts/fw-cargo.sh put it when it built `core` itself.
+  if [ "${SOFT3D_BUILD_STD:-0}" = 1 ] || ! grep -qx "$t" <<<"$(rustup target list --installed 2>/dev/null || true)"; then
+    elf=firmware/qemu-bench/target/build-std/$t/release/soft3d-qemu-bench
+  fi
   if [ -n "$size_tool" ]; then
     flash[$core]=$("$size_tool" "$elf" | awk 'NR == 2 { print $1 + $2 }')
   else

@@ -360,14 +360,17 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
     #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
         let l = lit(lights.diffuse(v.position, v.normal), v.color);
-        let k = LIGHT_RANGE.1 / 255.0;
+        // Half a level up, like the color effects' channels: truncation
+        // then rounds, and the values keep half a level of margin inside
+        // their range (values on its bounds would send every triangle
+        // whose rounded planes overshoot them to the careful path).
         let mut out = [0.0; MAX_VARYINGS];
         out[..5].copy_from_slice(&[
             v.uv.x * self.texture.width() as f32,
             v.uv.y * self.texture.height() as f32,
-            l[0] * k,
-            l[1] * k,
-            l[2] * k,
+            l[0] + 0.5,
+            l[1] + 0.5,
+            l[2] + 0.5,
         ]);
         out
     }

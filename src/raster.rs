@@ -655,7 +655,10 @@ impl<const V: usize> VertexValues<V> {
             z: (depth(a), depth(b), depth(c)),
             z_range: (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE),
             q,
-            q_range: (1.0 / 65536.0, 1.0),
+            // Normalized q is at most 1 at the vertices; the margin above
+            // lets its rounded plane overshoot there (it only needs to
+            // stay positive).
+            q_range: (1.0 / 65536.0, 2.0),
             vary,
             ranges,
             bounds,
@@ -767,7 +770,7 @@ fn span<C, S, E, P, D, Z>(
         let w = q.recip();
         let mut out = *v;
         for i in 0..E::VARYINGS {
-            out[i] = v[i].mul(w).clamp_between(bounds[i].0, bounds[i].1);
+            out[i] = v[i].mul_clamped(w, bounds[i].0, bounds[i].1);
         }
         out
     };

@@ -46,6 +46,9 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     fn div_int(self, n: i32) -> Self;
     /// `self * o`.
     fn mul(self, o: Self) -> Self;
+    /// `self * o` clamped to `[lo, hi]`: [`Interp::mul`] then
+    /// [`Interp::clamp_between`], in one clamp (a perspective division).
+    fn mul_clamped(self, o: Self, lo: Self, hi: Self) -> Self;
     /// `1 / self` for a positive value (zero or less gives a large value).
     fn recip(self) -> Self;
     /// `min(max(self, lo), hi)`.
@@ -123,6 +126,10 @@ impl Interp for f32 {
     #[inline(always)]
     fn mul(self, o: Self) -> Self {
         self * o
+    }
+    #[inline(always)]
+    fn mul_clamped(self, o: Self, lo: Self, hi: Self) -> Self {
+        (self * o).clamp_between(lo, hi)
     }
     #[inline(always)]
     fn recip(self) -> Self {
@@ -244,6 +251,13 @@ impl Interp for Fixed {
     fn mul(self, o: Self) -> Self {
         self.saturating_mul(o)
     }
+    #[inline(always)]
+    fn mul_clamped(self, o: Self, lo: Self, hi: Self) -> Self {
+        // The product clamped once, in 64 bits: saturating it to 32 bits
+        // first would change nothing, `[lo, hi]` being inside.
+        let p = (self.to_bits() as i64 * o.to_bits() as i64) >> Fixed::FRAC_BITS;
+        Fixed::from_bits(p.clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
+    }
     #[inline]
     fn recip(self) -> Self {
         if self.to_bits() <= 0 {
@@ -332,6 +346,11 @@ mod tests {
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth32(), 40000 * 65536 + 32768);
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth_f32(), 40000.5);
         assert_eq!(S::from_f32(0.5).recip().to_f32(), 2.0);
+        let (lo, hi) = (S::from_f32(-2.0), S::from_f32(3.0));
+        for (a, b) in [(1.5, 1.5), (-4.0, 1.0), (100.0, 200.0), (-0.25, 0.5), (30000.0, -30000.0)] {
+            let (a, b) = (S::from_f32(a), S::from_f32(b));
+            assert_eq!(a.mul_clamped(b, lo, hi), a.mul(b).clamp_between(lo, hi));
+        }
         assert_eq!(S::from_f32(4.0).rsqrt().to_f32(), 0.5);
         assert!((S::from_f32(2.0).rsqrt().to_f32() - core::f32::consts::FRAC_1_SQRT_2).abs() < 1e-4);
         assert_eq!(S::from_f32(-1.0).rsqrt().to_f32(), 0.0);

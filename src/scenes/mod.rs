@@ -105,6 +105,18 @@ pub static WHITE: Material<Gouraud> = Material::new(Gouraud);
 /// available), each with its file's camera, [`headlight`] and [`WHITE`].
 pub const FILE_SCENES: [(&str, &str); 2] = [("torus.babylon", "torus.babylon"), ("monkey", "monkey.babylon")];
 
+/// The textured benchmark scenes: the monkey of [`FILE_SCENES`] drawn with
+/// its texture by [`textured`], its perspective corrected at every pixel
+/// (`monkey-tex`) or every 32 pixels (`monkey-tex32`, the setting
+/// `docs/accuracy.md` recommends).
+pub const TEXTURED_SCENES: [&str; 2] = ["monkey-tex", "monkey-tex32"];
+
+/// The material of the textured benchmark scenes: `texture` (nearest texel,
+/// repeating) times Gouraud lighting, perspective mode `P`.
+pub const fn textured<P: crate::material::Perspective>(texture: crate::texture::Texture<'_>) -> Material<Textured<'_>, P> {
+    Material::new(Textured::new(texture)).with_perspective::<P>()
+}
+
 /// Names of the benchmark scenes, in the order [`draw_bench`] takes them.
 pub const BENCH_SCENES: [&str; 5] = ["empty", "fill", "torus", "demo-t0", "demo-t1.7"];
 

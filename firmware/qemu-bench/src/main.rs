@@ -56,9 +56,37 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
             });
         }
     }
+    #[cfg(soft3d_assets)]
+    {
+        use soft3d::material::{PerPixel, PerSpan};
+        use soft3d::scenes::{textured, TEXTURED_SCENES};
+        let texture = monkey_file::SUZANNE_TEXTURE;
+        textured_monkey(timer, &mut renderer, TEXTURED_SCENES[0], mode, ram, &textured::<PerPixel>(texture));
+        textured_monkey(timer, &mut renderer, TEXTURED_SCENES[1], mode, ram, &textured::<PerSpan<32>>(texture));
+    }
 }
 
-type BenchFrame<'r, S> = soft3d::Frame<'r, 'static, Rgb565, DEMO_VARYINGS, S>;
+/// The monkey drawn with `material` (one of the textured scenes).
+#[cfg(soft3d_assets)]
+fn textured_monkey<S: Settings, E: soft3d::effect::Effect, P: soft3d::material::Perspective>(
+    timer: &mut Timer,
+    renderer: &mut BenchRenderer<S>,
+    name: &str,
+    mode: &str,
+    ram: usize,
+    material: &soft3d::Material<E, P>,
+) {
+    if selected(name, mode) {
+        let camera = monkey_file::CAMERA;
+        measure_with(timer, renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
+            for (mesh, model, _, _) in &monkey_file::MESHES {
+                let _ = frame.draw(mesh, model, material);
+            }
+        });
+    }
+}
+
+type BenchFrame<'r, 'm, S> = soft3d::Frame<'r, 'm, Rgb565, DEMO_VARYINGS, S>;
 
 fn measure<S: Settings>(
     timer: &mut Timer,
@@ -66,7 +94,7 @@ fn measure<S: Settings>(
     name: &str,
     mode: &str,
     ram: usize,
-    draw: impl FnOnce(&mut BenchFrame<'_, S>),
+    draw: impl FnOnce(&mut BenchFrame<'_, 'static, S>),
 ) {
     let (camera, lights) = (demo_camera(), demo_lights());
     measure_with(timer, renderer, &camera, &lights, name, mode, ram, draw)
@@ -74,7 +102,7 @@ fn measure<S: Settings>(
 
 /// Renders one frame, timed, into the checksum sink and prints its line.
 #[allow(clippy::too_many_arguments)]
-fn measure_with<S: Settings>(
+fn measure_with<'m, S: Settings>(
     timer: &mut Timer,
     renderer: &mut BenchRenderer<S>,
     camera: &soft3d::Camera,
@@ -82,7 +110,7 @@ fn measure_with<S: Settings>(
     name: &str,
     mode: &str,
     ram: usize,
-    draw: impl FnOnce(&mut BenchFrame<'_, S>),
+    draw: impl FnOnce(&mut BenchFrame<'_, 'm, S>),
 ) {
     let mut out = TimedSink { inner: FrameChecksum::new(320, 240, Rgb565::BLACK), ticks: 0 };
     let top = cortex_m::register::msp::read() as usize;
