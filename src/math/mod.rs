@@ -33,7 +33,7 @@ pub(crate) const HARD_FLOAT: bool = !cfg!(target_arch = "arm") || cfg!(target_ab
 /// library routine for it; four 16×16-bit products are a fraction of
 /// that (the setup of every triangle evaluates a few dozen of them).
 #[inline(always)]
-pub fn mul_wide(a: i32, b: i32) -> i64 {
+pub(crate) fn mul_wide(a: i32, b: i32) -> i64 {
     if cfg!(soft3d_no_long_multiply) {
         mul_wide_by_halves(a, b)
     } else {
