@@ -361,9 +361,10 @@ mod tests {
         assert!(S::plane_within(v0, dx, dy, (112, 40), (32, 0), 5, lo, hi));
         assert!(!S::plane_within(v0, dx, dy, (112, 40), (32, 0), 5, lo, S::from_f32(15.5)));
         assert!(!S::plane_within(v0, dx, dy, (32, 0), (112, 40), 5, lo, S::from_f32(15.5)));
-        assert!(!S::plane_within(v0, dx, dy, (0, 32), (32, 0), 5, S::from_f32(9.5), hi)); // 9 at (0, 1)
+        // The plane is 9 at (0, 1) pixels, below 9.5.
+        assert!(!S::plane_within(v0, dx, dy, (0, 32), (32, 0), 5, S::from_f32(9.5), hi));
+        // The origin (10) is below the range.
         assert!(!S::plane_within(v0, dx, dy, (32, 0), (32, 0), 5, S::from_f32(10.5), hi));
-        // the origin is below
     }
 
     #[test]
