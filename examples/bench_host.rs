@@ -10,6 +10,7 @@ use embedded_graphics::prelude::RgbColor;
 use soft3d::effect::Effect;
 use soft3d::host::scene::HostScene;
 use soft3d::material::{Material, PerPixel, PerSpan, Perspective};
+use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
 use soft3d::scenes::{
     demo_camera, demo_lights, draw_bench, headlight, textured, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES,
     FILE_SCENES, TEXTURED_SCENES, WHITE,
@@ -24,6 +25,14 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
         draw_bench(&mut frame, i).expect("the scene fits its buffers");
+        let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
+        let Ok(_) = frame.finish(&mut sink);
+        println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
+    }
+    let mut wall: HostRenderer<Rgb565, WALL_VARYINGS, S> = HostRenderer::new(320, 240, 16, 8, 8, Rgb565::BLACK).expect("valid sizes");
+    for (i, name) in WALL_SCENES.iter().enumerate() {
+        let mut frame = wall.begin_frame(&WALL_CAMERA, &WALL_LIGHTS, Rgb565::BLACK);
+        draw_wall(&mut frame, i).expect("the scene fits its buffers");
         let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
         let Ok(_) = frame.finish(&mut sink);
         println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);

@@ -60,6 +60,7 @@ done
 
 fail=0
 md=""
+declare -A rendered
 # 1234567 -> 1,234,567
 commas() { sed ':a;s/\B[0-9]\{3\}\>/,&/;ta' <<<"$1"; }
 if [ "$mode_arg" = "--csv" ]; then
@@ -72,7 +73,12 @@ while IFS=, read -r scene mode core instr sink queued crc geometry stack ram; do
   want=$(grep "^$scene,$mode," <<<"$host" | cut -d, -f3)
   drawn=$(grep "^$scene,$mode," <<<"$host" | cut -d, -f4)
   [ "$crc" = "$want" ] || fail=1
+  if ! [[ "$instr" =~ ^[0-9]+$ ]]; then
+    echo "$scene $mode $core: instruction count overflowed ($instr)" >&2
+    exit 1
+  fi
   render=$((instr - sink))
+  rendered["$scene,$mode,$core"]=$render
   per_px=$([ "$drawn" -gt 0 ] && awk -v n="$render" -v p="$drawn" 'BEGIN { printf "%.1f", n / p }' || echo "n/a")
   fps=$(awk -v n="$render" 'BEGIN { printf "%.1f", 150000000 / n }')
   md+="| $scene | $mode | $core | $(commas "$render") | $per_px | $(commas "$geometry") | $(commas "$drawn") | $queued | $fps | $(commas "$ram") | $(commas "$stack") |"$'\n'
@@ -87,11 +93,31 @@ if [ "$fail" != 0 ]; then
   echo "target and host frames differ" >&2
   exit 1
 fi
+# Per effect, the cost of a pixel: a wall scene's frame minus the empty
+# frame (clears and strip hand-off), over the 76,800 pixels it fills. Two
+# triangles' setup per strip is included (a fraction of an instruction per
+# pixel).
+effects_md="| effect (wall scene) | fixed M4F | f32 M4F | fixed M0+ | f32 M0+ |"$'\n'"| --- | ---: | ---: | ---: | ---: |"$'\n'
+for scene in $(cut -d, -f1 <<<"$rows" | grep '^wall-' | awk '!seen[$0]++'); do
+  line="| $scene |"
+  for key in fixed,m4f f32,m4f fixed,m0 f32,m0; do
+    mode=${key%,*} core=${key#*,}
+    w=${rendered[$scene,$mode,$core]:-} e=${rendered[empty,$mode,$core]:-}
+    line+=" $([ -n "$w" ] && [ -n "$e" ] && awk -v w="$w" -v e="$e" 'BEGIN { printf "%.1f", (w - e) / 76800 }' || echo n/a) |"
+  done
+  effects_md+="$line"$'\n'
+done
+if [ -z "$mode_arg" ]; then
+  echo
+  echo "Instructions per pixel by effect, (wall frame - empty frame) / 76,800:"
+  printf '%s' "$effects_md"
+fi
 if [ "$mode_arg" = "--readme" ]; then
   # Replace the lines between the two markers with the new table.
   table="| scene | mode | core | instructions / frame | per pixel drawn | of which geometry | pixels drawn | triangles drawn | fps at 150 MHz (estimate) | renderer RAM | peak stack |"$'\n'
   table+="| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"$'\n'"$md"
   table+=$'\n'"Benchmark firmware flash: $(commas "${flash[m4f]}") bytes (M4F), $(commas "${flash[m0]}") bytes (M0+ code)."$'\n'
+  table+=$'\n'"Instructions per pixel by effect: each \`wall-*\` frame minus the \`empty\` frame (clears and strip hand-off), over its 76,800 pixels:"$'\n\n'"$effects_md"
   awk -v table="$table" '
     /<!-- target-bench:begin -->/ { print; printf "%s", table; skip = 1; next }
     /<!-- target-bench:end -->/ { skip = 0 }

@@ -117,8 +117,9 @@ pub struct FrameStats {
     pub back_facing: u32,
     /// Triangles with zero area after snapping.
     pub degenerate: u32,
-    /// Triangles (or clipped pieces) entirely off screen, behind the near
-    /// plane or beyond the far plane.
+    /// Triangles (or clipped pieces) that cover no pixel center: entirely
+    /// off screen, between pixel centers (their bounds hold no row or no
+    /// column center), behind the near plane or beyond the far plane.
     pub off_screen: u32,
     /// Triangles that needed clipping.
     pub clipped: u32,
@@ -655,7 +656,10 @@ where
         // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
         let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
         let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
-        if first >= end || right <= 0 || left >= self.b.width as i32 {
+        // A triangle between pixel centers (no row or no column center in
+        // its bounds) covers nothing: dropped here, it costs no queueing,
+        // binning or setup.
+        if first >= end || left >= right || right <= 0 || left >= self.b.width as i32 {
             self.stats.off_screen += 1;
             return Ok(());
         }

@@ -4,6 +4,7 @@
 //! `src/bin/study.rs` times the accuracy study's configurations.
 #![no_std]
 
+use core::sync::atomic::{AtomicU32, Ordering};
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
@@ -38,20 +39,36 @@ pub const INSTRUCTIONS_PER_TICK: u32 = 40;
 
 pub struct Timer(pub cortex_m::peripheral::SYST);
 
+/// Times the 24-bit SysTick counter wrapped since [`Timer::start`] (every
+/// 671 million instructions), counted by its exception: per-pixel lighting
+/// in software float fills a frame with billions.
+static WRAPS: AtomicU32 = AtomicU32::new(0);
+
+#[cortex_m_rt::exception]
+fn SysTick() {
+    // Only this handler writes: a load and a store suffice (ARMv6-M has no
+    // atomic read-modify-write).
+    WRAPS.store(WRAPS.load(Ordering::Relaxed) + 1, Ordering::Relaxed);
+}
+
 impl Timer {
     /// Restarts the count.
     pub fn start(&mut self) {
         self.0.clear_current();
         let _ = self.0.has_wrapped();
+        WRAPS.store(0, Ordering::Relaxed);
     }
-    /// Instructions since `start`, or None if the 24-bit counter wrapped
-    /// (more than 671 million instructions).
+    /// Instructions since `start`, or None beyond `u32::MAX`.
     pub fn instructions(&mut self) -> Option<u32> {
-        let now = cortex_m::peripheral::SYST::get_current();
-        if self.0.has_wrapped() {
-            return None;
+        loop {
+            let wraps = WRAPS.load(Ordering::Relaxed);
+            let now = cortex_m::peripheral::SYST::get_current();
+            // A wrap between the two reads: read both again.
+            if WRAPS.load(Ordering::Relaxed) == wraps {
+                let ticks = wraps as u64 * 0x0100_0000 + (0x00FF_FFFF - now) as u64;
+                return u32::try_from(ticks * INSTRUCTIONS_PER_TICK as u64).ok();
+            }
         }
-        Some((0x00FF_FFFF - now) * INSTRUCTIONS_PER_TICK)
     }
 }
 
@@ -105,8 +122,8 @@ pub fn calibrate(timer: &mut Timer) -> Option<u32> {
     Some(((2 * LOOPS as u64 + ticks as u64 / 2) / ticks.max(1) as u64) as u32)
 }
 
-/// Starts SysTick as the instruction counter (free-running over 24 bits,
-/// core clock), calibrates it and prints the
+/// Starts SysTick as the instruction counter (core clock, free-running over
+/// 24 bits, its wraps counted by its exception), calibrates it and prints the
 /// `calibration,instructions_per_tick,N,assumed,40` line the scripts check.
 pub fn start_timer() -> Timer {
     let Some(p) = cortex_m::Peripherals::take() else {
@@ -116,6 +133,7 @@ pub fn start_timer() -> Timer {
     let mut syst = p.SYST;
     syst.set_clock_source(cortex_m::peripheral::syst::SystClkSource::Core);
     syst.set_reload(0x00FF_FFFF);
+    syst.enable_interrupt();
     syst.enable_counter();
     let mut timer = Timer(syst);
     match calibrate(&mut timer) {

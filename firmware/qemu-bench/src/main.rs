@@ -19,6 +19,7 @@ use cortex_m_semihosting::hprintln;
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
+use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
 use soft3d::{Renderer, Settings};
 use soft3d_qemu_bench::*;
 
@@ -35,6 +36,9 @@ fn selected(scene: &str, mode: &str) -> bool {
 
 type BenchRenderer<S> = Renderer<Rgb565, 320, 240, 16, DEMO_VERTICES, DEMO_TRIANGLES, DEMO_VARYINGS, S>;
 
+/// The wall scenes' renderer: two triangles, Phong's six varyings.
+type WallRenderer<S> = Renderer<Rgb565, 320, 240, 16, 8, 8, WALL_VARYINGS, S>;
+
 fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     let mut renderer: BenchRenderer<S> = Renderer::new(Rgb565::BLACK);
     let ram = core::mem::size_of::<BenchRenderer<S>>();
@@ -42,6 +46,16 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
         if selected(name, mode) {
             measure(timer, &mut renderer, name, mode, ram, |frame| {
                 let _ = draw_bench(frame, i);
+            });
+        }
+    }
+    // The full-screen wall with each effect, in a renderer sized for it.
+    let mut wall: WallRenderer<S> = Renderer::new(Rgb565::BLACK);
+    let wall_ram = core::mem::size_of::<WallRenderer<S>>();
+    for (i, name) in WALL_SCENES.iter().enumerate() {
+        if selected(name, mode) {
+            measure_with(timer, &mut wall, &WALL_CAMERA, &WALL_LIGHTS, name, mode, wall_ram, |frame| {
+                let _ = draw_wall(frame, i);
             });
         }
     }
@@ -86,7 +100,7 @@ fn textured_monkey<S: Settings, E: soft3d::effect::Effect, P: soft3d::material::
     }
 }
 
-type BenchFrame<'r, 'm, S> = soft3d::Frame<'r, 'm, Rgb565, DEMO_VARYINGS, S>;
+type BenchFrame<'r, 'm, S, const V: usize = DEMO_VARYINGS> = soft3d::Frame<'r, 'm, Rgb565, V, S>;
 
 fn measure<S: Settings>(
     timer: &mut Timer,
@@ -102,15 +116,15 @@ fn measure<S: Settings>(
 
 /// Renders one frame, timed, into the checksum sink and prints its line.
 #[allow(clippy::too_many_arguments)]
-fn measure_with<'m, S: Settings>(
+fn measure_with<'m, S: Settings, const NV: usize, const NT: usize, const V: usize>(
     timer: &mut Timer,
-    renderer: &mut BenchRenderer<S>,
+    renderer: &mut Renderer<Rgb565, 320, 240, 16, NV, NT, V, S>,
     camera: &soft3d::Camera,
     lights: &soft3d::Lights,
     name: &str,
     mode: &str,
     ram: usize,
-    draw: impl FnOnce(&mut BenchFrame<'_, 'm, S>),
+    draw: impl FnOnce(&mut BenchFrame<'_, 'm, S, V>),
 ) {
     let mut out = TimedSink { inner: FrameChecksum::new(320, 240, Rgb565::BLACK), ticks: 0 };
     let top = cortex_m::register::msp::read() as usize;

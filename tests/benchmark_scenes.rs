@@ -1,0 +1,134 @@
+//! The built-in full-screen benchmark (`soft3d::scenes::wall`) measures
+//! what it claims to: every wall scene covers every pixel of the 320×240
+//! view with its two triangles, in both numeric modes, and the effects
+//! really differ (each row of the benchmark runs a different span loop).
+
+use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
+use soft3d::host::Image;
+use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
+use soft3d::{FixedPoint, FloatingPoint, HostRenderer, Settings};
+
+/// Wall scene `index` at 320×240 in 16-row strips, with the frame's
+/// statistics.
+fn render<S: Settings>(index: usize) -> (Image<Rgb565>, soft3d::FrameStats) {
+    let mut r: HostRenderer<Rgb565, WALL_VARYINGS, S> = HostRenderer::new(320, 240, 16, 8, 8, Rgb565::BLACK).unwrap();
+    let mut frame = r.begin_frame(&WALL_CAMERA, &WALL_LIGHTS, Rgb565::BLACK);
+    draw_wall(&mut frame, index).unwrap();
+    // Magenta marks pixels the renderer never sent.
+    let mut img = Image::new(320, 240, Rgb565::MAGENTA);
+    let Ok(stats) = frame.finish(&mut img);
+    (img, stats)
+}
+
+fn check_mode<S: Settings>(mode: &str) -> Vec<Image<Rgb565>> {
+    let mut frames = Vec::new();
+    for (i, name) in WALL_SCENES.iter().enumerate() {
+        let (img, stats) = render::<S>(i);
+        assert_eq!((stats.queued, stats.clipped, stats.back_facing), (2, 0, 0), "{name} {mode}: {stats:?}");
+        let unlit = img.pixels.iter().filter(|&&c| c == Rgb565::BLACK || c == Rgb565::MAGENTA).count();
+        assert_eq!(unlit, 0, "{name} {mode}: {unlit} of 76,800 pixels not drawn");
+        frames.push(img);
+    }
+    for i in 0..frames.len() {
+        for j in 0..i {
+            assert!(frames[i].pixels != frames[j].pixels, "{} and {} ({mode}) are the same frame", WALL_SCENES[i], WALL_SCENES[j]);
+        }
+    }
+    frames
+}
+
+#[test]
+fn every_wall_scene_fills_the_view_with_a_different_frame() {
+    let fixed = check_mode::<FixedPoint>("fixed");
+    let float = check_mode::<FloatingPoint>("f32");
+    // Untextured, the two modes draw the same pictures up to a level of
+    // rounding. (Textured, fixed point is off by texels on this wall: see
+    // `perspective_texture_coordinates_on_a_large_wall` below.)
+    for (i, name) in WALL_SCENES.iter().enumerate().take(4) {
+        let pairs = || fixed[i].pixels.iter().zip(&float[i].pixels);
+        let differ = pairs().filter(|(a, b)| a != b).count();
+        let step = |x: Rgb565, y: Rgb565| x.r().abs_diff(y.r()).max(x.g().abs_diff(y.g())).max(x.b().abs_diff(y.b()));
+        let max = pairs().map(|(&a, &b)| step(a, b)).max().unwrap_or(0);
+        assert!(differ < 1000 && max <= 1, "{name}: fixed and f32 differ in {differ} pixels, by up to {max} levels");
+    }
+}
+
+/// A 64×64 texture whose texel (x, y) encodes its coordinates: red
+/// `x / 2`, blue `x % 2`, green `y`.
+static COORDINATES: [u16; 64 * 64] = {
+    let mut t = [0u16; 64 * 64];
+    let mut i = 0;
+    while i < t.len() {
+        let (x, y) = (i % 64, i / 64);
+        t[i] = ((x as u16 >> 1) << 11) | ((y as u16) << 5) | (x as u16 & 1);
+        i += 1;
+    }
+    t
+};
+
+/// The wall textured with [`COORDINATES`], perspective-correct at every
+/// pixel and unlit: for each of its two triangles, the mean and the largest
+/// distance in texels between the texel drawn and the exact one (the pixel
+/// center's ray met with the wall's plane, in `f64`).
+fn texel_errors<S: Settings>() -> [(f64, f64); 2] {
+    use soft3d::effect::Textured;
+    use soft3d::material::{Material, PerPixel};
+    use soft3d::math::{Mat4, Vec3};
+    use soft3d::scene::Lights;
+    use soft3d::scenes::wall::WALL;
+    let texture = soft3d::texture::Texture::new(&COORDINATES, 64, 64).unwrap();
+    let material: Material<Textured<'_>, PerPixel> = Material::new(Textured::new(texture)).with_perspective::<PerPixel>();
+    let mut r: HostRenderer<Rgb565, WALL_VARYINGS, S> = HostRenderer::new(320, 240, 16, 8, 8, Rgb565::BLACK).unwrap();
+    let unlit = Lights { ambient: Vec3::ONE, point: None, directional: None };
+    let mut frame = r.begin_frame(&WALL_CAMERA, &unlit, Rgb565::BLACK);
+    frame.draw(&WALL, &Mat4::IDENTITY, &material).unwrap();
+    let mut img = Image::new(320, 240, Rgb565::BLACK);
+    let Ok(_) = frame.finish(&mut img);
+    // The camera at (0, 0, -1) looks along +z, 0.8 rad vertical field of
+    // view; the wall is the plane z = 6 + x / 6, u = (x + 12) / 3 and
+    // v = (9 - y) / 3 repeats of 64 texels.
+    let (tan, aspect) = (0.4f64.tan(), 320.0 / 240.0);
+    let (mut sum, mut worst, mut n) = ([0.0; 2], [0.0f64; 2], [0usize; 2]);
+    for py in 0..240 {
+        for px in 0..320 {
+            let dx = ((px as f64 + 0.5) / 160.0 - 1.0) * tan * aspect;
+            let dy = (1.0 - (py as f64 + 0.5) / 120.0) * tan;
+            let t = 7.0 / (1.0 - dx / 6.0);
+            let (x, y) = (dx * t, dy * t);
+            let (u, v) = ((x + 12.0) / 3.0 * 64.0, (9.0 - y) / 3.0 * 64.0);
+            let c = img.get(px, py);
+            let (tu, tv) = ((c.r() as i32 * 2 + (c.b() as i32 & 1)) as f64, c.g() as f64);
+            // Distance on the 64-texel circle.
+            let off = |exact: f64, got: f64| ((exact.floor() - got).rem_euclid(64.0) + 32.0).rem_euclid(64.0) - 32.0;
+            let e = off(u, tu).abs().max(off(v, tv).abs());
+            // The shared edge runs from (-12, -9) to (12, 9).
+            let side = usize::from(y <= 0.75 * x);
+            sum[side] += e;
+            worst[side] = worst[side].max(e);
+            n[side] += 1;
+        }
+    }
+    [(sum[0] / n[0] as f64, worst[0]), (sum[1] / n[1] as f64, worst[1])]
+}
+
+#[test]
+fn perspective_texture_coordinates_on_a_large_wall() {
+    // A pixel center near a texel edge may land on the neighbor: at most
+    // one texel off, rarely.
+    for (mean, worst) in texel_errors::<FloatingPoint>() {
+        assert!(mean < 0.01 && worst <= 1.0, "f32: mean {mean:.3}, worst {worst} texels");
+    }
+}
+
+/// Known defect, not yet fixed: with 16.16 the normalized `1/w` plane's
+/// gradient keeps only 2^-16 per pixel, and its rounding, stepped over
+/// hundreds of pixels and divided by `1/w`, moves texture coordinates of
+/// 512 texels by 1 to 4 texels (measured: mean 1.55 and 1.0 texels, worst
+/// 4 and 2 on the two triangles). Run with `--ignored` to see it.
+#[test]
+#[ignore = "known defect: 16.16 perspective correction drifts on large triangles"]
+fn perspective_texture_coordinates_on_a_large_wall_fixed_point() {
+    for (mean, worst) in texel_errors::<FixedPoint>() {
+        assert!(mean < 0.01 && worst <= 1.0, "fixed: mean {mean:.3}, worst {worst} texels");
+    }
+}
