@@ -599,7 +599,8 @@ impl<C, Z> StripTarget<'_, C, Z> {
 struct VertexValues<const V: usize> {
     z: (f32, f32, f32),
     z_range: (f32, f32),
-    /// Normalized `1 / w` (`(1, 1, 1)` without perspective correction).
+    /// Normalized `1 / w` times [`Interp::Q_SCALE`] (`(1, 1, 1)` without
+    /// perspective correction).
     q: (f32, f32, f32),
     q_range: (f32, f32),
     /// Varyings, times `q` when perspective-correct.
@@ -625,6 +626,8 @@ impl<const V: usize> VertexValues<V> {
         } else {
             (1.0, 1.0, 1.0)
         };
+        // The q plane itself is kept times `Q_SCALE` (see there).
+        let scale = if P::CORRECT { S::Q_SCALE } else { 1.0 };
         let ranges = E::ranges::<C>();
         let periods = effect.periods();
         let mut vary = [(0.0, 0.0, 0.0); V];
@@ -654,11 +657,11 @@ impl<const V: usize> VertexValues<V> {
         Self {
             z: (depth(a), depth(b), depth(c)),
             z_range: (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE),
-            q,
+            q: (q.0 * scale, q.1 * scale, q.2 * scale),
             // Normalized q is at most 1 at the vertices; the margin above
             // lets its rounded plane overshoot there (it only needs to
             // stay positive).
-            q_range: (1.0 / 65536.0, 2.0),
+            q_range: (scale / 65536.0, 2.0 * scale),
             vary,
             ranges,
             bounds,
@@ -767,7 +770,7 @@ fn span<C, S, E, P, D, Z>(
 {
     // Values divided by the interpolated q, clamped to their ranges.
     let divide = |v: &[S; MAX_VARYINGS], q: S| {
-        let w = q.recip();
+        let w = q.q_recip();
         let mut out = *v;
         for i in 0..E::VARYINGS {
             out[i] = v[i].mul_clamped(w, bounds[i].0, bounds[i].1);

@@ -20,6 +20,12 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// Depth values are interpolated as `depth * DEPTH_SCALE`, where
     /// `depth` is in stored 16-bit units (`0..=65535`).
     const DEPTH_SCALE: f32;
+    /// Normalized `1 / w` (in `(0, 2]`) is interpolated as `q * Q_SCALE`:
+    /// fixed point gives it 13 more fractional bits, or the rounding of its
+    /// gradient (2^-17 per pixel), stepped over hundreds of pixels and
+    /// divided by `q`, moves the texture coordinates of a large triangle by
+    /// texels. See [`Interp::q_recip`].
+    const Q_SCALE: f32;
     /// Whether stepping can wrap around, so that a triangle's planes must
     /// be checked against their ranges ([`Interp::plane_within`]). `f32`
     /// saturates when converted instead.
@@ -49,8 +55,9 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// `self * o` clamped to `[lo, hi]`: [`Interp::mul`] then
     /// [`Interp::clamp_between`], in one clamp (a perspective division).
     fn mul_clamped(self, o: Self, lo: Self, hi: Self) -> Self;
-    /// `1 / self` for a positive value (zero or less gives a large value).
-    fn recip(self) -> Self;
+    /// The perspective division's factor `1 / q` from an interpolated
+    /// `self = q * Q_SCALE` (positive; zero or less gives a large value).
+    fn q_recip(self) -> Self;
     /// `min(max(self, lo), hi)`.
     fn clamp_between(self, lo: Self, hi: Self) -> Self;
     /// `1 / sqrt(self)` for a positive value; zero or less gives zero.
@@ -86,6 +93,7 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
 impl Interp for f32 {
     const NAME: &'static str = "f32";
     const DEPTH_SCALE: f32 = 1.0;
+    const Q_SCALE: f32 = 1.0;
     const WRAPS: bool = false;
     #[inline]
     fn from_f32(v: f32) -> Self {
@@ -132,7 +140,7 @@ impl Interp for f32 {
         (self * o).clamp_between(lo, hi)
     }
     #[inline(always)]
-    fn recip(self) -> Self {
+    fn q_recip(self) -> Self {
         if self > 1e-30 {
             1.0 / self
         } else {
@@ -212,6 +220,7 @@ impl Interp for Fixed {
     const NAME: &'static str = "fixed16";
     // Depth up to 65535 does not fit 16.16 signed; it is kept halved (17.15).
     const DEPTH_SCALE: f32 = 0.5;
+    const Q_SCALE: f32 = 8192.0;
     const WRAPS: bool = true;
     #[inline]
     fn from_f32(v: f32) -> Self {
@@ -259,12 +268,26 @@ impl Interp for Fixed {
         Fixed::from_bits(p.clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
     }
     #[inline]
-    fn recip(self) -> Self {
-        if self.to_bits() <= 0 {
-            Fixed::from_bits(i32::MAX)
-        } else {
-            self.saturating_recip()
+    fn q_recip(self) -> Self {
+        // The bits are q * 2^29 (q in (0, 2], at most 2^30); the result's
+        // are 2^16 / q = 2^45 / bits.
+        let bits = self.to_bits();
+        if bits <= 0 {
+            return Fixed::from_bits(i32::MAX);
         }
+        // The top 17 bits of the divisor, `d` in [2^16, 2^17), in one
+        // 32-bit division (a 64-bit one is a library call of a hundred
+        // instructions or more on Cortex-M; and no float, so that every
+        // core gets the same bits): bits ~ d * 2^(15 - n), so 2^45 / bits
+        // ~ (2^32 / d) * 2^(n - 2), within 3e-5 relative.
+        let n = bits.leading_zeros();
+        let d = ((bits as u32) << n) >> 15;
+        // 2^32 / d rounded: 2^32 = t * d + rest + 1.
+        let t = u32::MAX / d;
+        let rest = u32::MAX - t * d;
+        let t = if 2 * (rest + 1) >= d { t + 1 } else { t };
+        let r = if n >= 2 { (t as u64) << (n - 2) } else { t as u64 >> 1 };
+        Fixed::from_bits(r.min(i32::MAX as u64) as i32)
     }
     #[inline]
     fn rsqrt(self) -> Self {
@@ -345,7 +368,10 @@ mod tests {
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth16(), 40000);
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth32(), 40000 * 65536 + 32768);
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth_f32(), 40000.5);
-        assert_eq!(S::from_f32(0.5).recip().to_f32(), 2.0);
+        assert_eq!(S::from_f32(0.5 * S::Q_SCALE).q_recip().to_f32(), 2.0);
+        assert_eq!(S::from_f32(2.0 * S::Q_SCALE).q_recip().to_f32(), 0.5);
+        let third = S::from_f32(3.0 * S::Q_SCALE / 4.0).q_recip().to_f32();
+        assert!((third - 4.0 / 3.0).abs() < 1e-4, "{third}");
         let (lo, hi) = (S::from_f32(-2.0), S::from_f32(3.0));
         for (a, b) in [(1.5, 1.5), (-4.0, 1.0), (100.0, 200.0), (-0.25, 0.5), (30000.0, -30000.0)] {
             let (a, b) = (S::from_f32(a), S::from_f32(b));
