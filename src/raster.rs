@@ -741,6 +741,18 @@ fn floor(v: f32) -> f32 {
     }
 }
 
+/// Varyings divided by the interpolated `q`, clamped to their ranges (a
+/// function, not a closure, so that it is inlined into the span loop).
+#[inline(always)]
+fn divide<S: Interp, E: Effect>(v: &[S; MAX_VARYINGS], q: S, bounds: &[(S, S); MAX_VARYINGS]) -> [S; MAX_VARYINGS] {
+    let w = q.q_recip();
+    let mut out = *v;
+    for i in 0..E::VARYINGS {
+        out[i] = v[i].mul_clamped(w, bounds[i].0, bounds[i].1);
+    }
+    out
+}
+
 /// The inner loop: one row of one triangle. No branch depends on a feature
 /// at run time; `P` and `D` are constants here, and every value is known
 /// to be in range, so nothing is clamped per pixel (except after a
@@ -768,19 +780,10 @@ fn span<C, S, E, P, D, Z>(
     D: DepthMode,
     Z: DepthFormat,
 {
-    // Values divided by the interpolated q, clamped to their ranges.
-    let divide = |v: &[S; MAX_VARYINGS], q: S| {
-        let w = q.q_recip();
-        let mut out = *v;
-        for i in 0..E::VARYINGS {
-            out[i] = v[i].mul_clamped(w, bounds[i].0, bounds[i].1);
-        }
-        out
-    };
     if P::CORRECT && P::SPAN > 1 {
         // Exact at the start of every segment of SPAN pixels (and at the
         // span's end), linear in between.
-        let mut cur = divide(&vals, q);
+        let mut cur = divide::<S, E>(&vals, q, bounds);
         let len = color.len();
         let mut start = 0;
         while start < len {
@@ -793,7 +796,7 @@ fn span<C, S, E, P, D, Z>(
             for i in 0..E::VARYINGS {
                 v_end[i] = vals[i].add_mul(v_dx[i], reach);
             }
-            let end = divide(&v_end, q_end);
+            let end = divide::<S, E>(&v_end, q_end, bounds);
             let mut step = [S::default(); MAX_VARYINGS];
             if reach > 0 {
                 for i in 0..E::VARYINGS {
@@ -827,7 +830,11 @@ fn span<C, S, E, P, D, Z>(
             if D::WRITE {
                 *zb = zq;
             }
-            *px = if P::CORRECT { effect.shade(uniforms, face, &divide(&vals, q), *px) } else { effect.shade(uniforms, face, &vals, *px) };
+            *px = if P::CORRECT {
+                effect.shade(uniforms, face, &divide::<S, E>(&vals, q, bounds), *px)
+            } else {
+                effect.shade(uniforms, face, &vals, *px)
+            };
         }
         if D::TEST || D::WRITE {
             z = z.add(z_dx);

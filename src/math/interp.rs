@@ -267,7 +267,7 @@ impl Interp for Fixed {
         let p = (self.to_bits() as i64 * o.to_bits() as i64) >> Fixed::FRAC_BITS;
         Fixed::from_bits(p.clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
     }
-    #[inline]
+    #[inline(always)]
     fn q_recip(self) -> Self {
         // The bits are q * 2^29 (q in (0, 2], at most 2^30); the result's
         // are 2^16 / q = 2^45 / bits.
@@ -291,13 +291,7 @@ impl Interp for Fixed {
     }
     #[inline]
     fn rsqrt(self) -> Self {
-        let r = self.to_bits();
-        if r <= 0 {
-            return Fixed::ZERO;
-        }
-        // sqrt(x) in 16.16 is isqrt(raw * 2^16); its reciprocal saturates.
-        let root = ((r as u64) << 16).isqrt() as i64;
-        Fixed::from_bits(((1i64 << 32) / root).min(i32::MAX as i64) as i32)
+        Fixed::rsqrt(self)
     }
     #[inline]
     fn clamp_between(self, lo: Self, hi: Self) -> Self {
