@@ -169,8 +169,11 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn channel(self) -> u8 {
-        // `as` saturates and maps NaN to 0.
-        self as u8
+        // `as` saturates and maps NaN to 0, and so does the Arm FPU's
+        // conversion to u32: through u32 it is one instruction and a
+        // compare, where LLVM tests the bounds of a direct `as u8` with two
+        // float compares (ten instructions a channel). Equal for every input.
+        (self as u32).min(255) as u8
     }
     #[inline(always)]
     fn to_bits16(self) -> i32 {
@@ -178,7 +181,8 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn depth16(self) -> u16 {
-        self as u16
+        // Through u32, as `channel`.
+        (self as u32).min(65535) as u16
     }
     #[inline(always)]
     fn depth32(self) -> u32 {
@@ -385,6 +389,39 @@ mod tests {
         assert!(!S::plane_within(v0, dx, dy, (0, 32), (32, 0), 5, S::from_f32(9.5), hi));
         // The origin (10) is below the range.
         assert!(!S::plane_within(v0, dx, dy, (32, 0), (32, 0), 5, S::from_f32(10.5), hi));
+    }
+
+    #[test]
+    fn f32_channels_and_depths_saturate_like_as() {
+        // Every float class: NaN, infinities, zeros, subnormals, values
+        // around each bound, and a sweep of bit patterns.
+        let specials = [
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            0.0,
+            -0.0,
+            f32::MIN_POSITIVE,
+            1e-45,
+            -1e-45,
+            254.99,
+            255.0,
+            255.5,
+            256.0,
+            65534.9,
+            65535.0,
+            65535.9,
+            65536.0,
+            4.3e9,
+            -1.0,
+            -0.5,
+            0.5,
+        ];
+        let sweep = (0..=u32::MAX).step_by(65_521).map(f32::from_bits);
+        for v in specials.into_iter().chain(sweep) {
+            assert_eq!(Interp::channel(v), v as u8, "{v:e}");
+            assert_eq!(Interp::depth16(v), v as u16, "{v:e}");
+        }
     }
 
     #[test]
