@@ -18,8 +18,8 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::hprintln;
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
-use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
+use soft3d::scenes::{demo_camera, demo_lights, draw_bench, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::{Renderer, Settings};
 use soft3d_qemu_bench::*;
 
