@@ -25,17 +25,13 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
     for (i, name) in BENCH_SCENES.iter().enumerate() {
         let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
         draw_bench(&mut frame, i).expect("the scene fits its buffers");
-        let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
-        let Ok(_) = frame.finish(&mut sink);
-        println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
+        print_frame(name, mode, frame);
     }
     let mut wall: HostRenderer<Rgb565, WALL_VARYINGS, S> = HostRenderer::new(320, 240, 16, 8, 8, Rgb565::BLACK).expect("valid sizes");
     for (i, name) in WALL_SCENES.iter().enumerate() {
         let mut frame = wall.begin_frame(&WALL_CAMERA, &WALL_LIGHTS, Rgb565::BLACK);
         draw_wall(&mut frame, i).expect("the scene fits its buffers");
-        let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
-        let Ok(_) = frame.finish(&mut sink);
-        println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);
+        print_frame(name, mode, frame);
     }
     for (name, scene) in files {
         file_scene(&mut r, name, mode, scene, &WHITE);
@@ -61,6 +57,11 @@ fn file_scene<S: Settings, E: Effect, P: Perspective>(
     for m in &scene.meshes {
         frame.draw(&m.mesh(), &m.model, material).expect("the scene fits its buffers");
     }
+    print_frame(name, mode, frame);
+}
+
+/// Finishes a frame into the checksum sink and prints its line.
+fn print_frame<S: Settings, const V: usize>(name: &str, mode: &str, frame: soft3d::Frame<'_, '_, Rgb565, V, S>) {
     let mut sink = FrameChecksum::new(320, 240, Rgb565::BLACK);
     let Ok(_) = frame.finish(&mut sink);
     println!("{name},{mode},{:08x},{}", sink.sum, sink.drawn);

@@ -60,7 +60,7 @@ done
 
 fail=0
 md=""
-declare -A rendered
+declare -A rendered pixels
 # 1234567 -> 1,234,567
 commas() { sed ':a;s/\B[0-9]\{3\}\>/,&/;ta' <<<"$1"; }
 if [ "$mode_arg" = "--csv" ]; then
@@ -79,6 +79,7 @@ while IFS=, read -r scene mode core instr sink queued crc geometry stack ram; do
   fi
   render=$((instr - sink))
   rendered["$scene,$mode,$core"]=$render
+  pixels["$scene"]=$drawn
   per_px=$([ "$drawn" -gt 0 ] && awk -v n="$render" -v p="$drawn" 'BEGIN { printf "%.1f", n / p }' || echo "n/a")
   fps=$(awk -v n="$render" 'BEGIN { printf "%.1f", 150000000 / n }')
   md+="| $scene | $mode | $core | $(commas "$render") | $per_px | $(commas "$geometry") | $(commas "$drawn") | $queued | $fps | $(commas "$ram") | $(commas "$stack") |"$'\n'
@@ -94,7 +95,8 @@ if [ "$fail" != 0 ]; then
   exit 1
 fi
 # Per effect, the cost of a pixel: a wall scene's frame minus the empty
-# frame (clears and strip hand-off), over the 76,800 pixels it fills. Two
+# frame (clears and strip hand-off), over the pixels it draws (all 76,800,
+# which tests/benchmark_scenes.rs checks). Two
 # triangles' setup per strip is included (a fraction of an instruction per
 # pixel).
 effects_md="| effect (wall scene) | fixed M4F | f32 M4F | fixed M0+ | f32 M0+ |"$'\n'"| --- | ---: | ---: | ---: | ---: |"$'\n'
@@ -103,7 +105,7 @@ for scene in $(cut -d, -f1 <<<"$rows" | grep '^wall-' | awk '!seen[$0]++'); do
   for key in fixed,m4f f32,m4f fixed,m0 f32,m0; do
     mode=${key%,*} core=${key#*,}
     w=${rendered[$scene,$mode,$core]:-} e=${rendered[empty,$mode,$core]:-}
-    line+=" $([ -n "$w" ] && [ -n "$e" ] && awk -v w="$w" -v e="$e" 'BEGIN { printf "%.1f", (w - e) / 76800 }' || echo n/a) |"
+    line+=" $([ -n "$w" ] && [ -n "$e" ] && awk -v w="$w" -v e="$e" -v p="${pixels[$scene]}" 'BEGIN { printf "%.1f", (w - e) / p }' || echo n/a) |"
   done
   effects_md+="$line"$'\n'
 done

@@ -14,7 +14,7 @@ const fn camera(position: Vec3, target: Vec3) -> Camera {
 }
 
 /// Unwraps a mesh built at compile time (a bad one is a build error).
-const fn valid(m: Result<Mesh<'static>, crate::mesh::MeshError>) -> Mesh<'static> {
+pub(super) const fn valid(m: Result<Mesh<'static>, crate::mesh::MeshError>) -> Mesh<'static> {
     match m {
         Ok(m) => m,
         Err(_) => panic!("invalid built-in mesh"),
@@ -54,7 +54,7 @@ static FLOOR_POSITIONS: [Vec3; 4] =
 static FLOOR_NORMALS: [Vec3; 4] = [Vec3::new(0.0, 1.0, 0.0); 4];
 /// The texture repeats 8 times each way (512 texels across the floor).
 static FLOOR_UVS: [Vec2; 4] = [Vec2::new(0.0, 0.0), Vec2::new(0.0, 8.0), Vec2::new(8.0, 8.0), Vec2::new(8.0, 0.0)];
-static QUAD_INDICES: [u16; 6] = [0, 1, 2, 0, 2, 3];
+pub(super) static QUAD_INDICES: [u16; 6] = [0, 1, 2, 0, 2, 3];
 
 /// A 12 × 30 floor, two triangles, checkerboard UVs (draw it textured with
 /// [`CHECKER`]).

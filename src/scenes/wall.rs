@@ -5,7 +5,7 @@
 //! frame minus the `empty` frame, over the 76,800 pixels). Shared by the
 //! emulated benchmark and its host twin, which must give equal frames.
 
-use super::study::CHECKER;
+use super::study::{valid, CHECKER, QUAD_INDICES};
 use crate::effect::{BlinnPhong, Color, Flat, Gouraud, Phong, Textured};
 use crate::material::{Material, PerPixel, PerSpan};
 use crate::math::{Mat4, Vec2, Vec3};
@@ -27,16 +27,12 @@ static POSITIONS: [Vec3; 4] =
 static NORMALS: [Vec3; 4] = [Vec3::new(0.164_398_99, 0.0, -0.986_393_9); 4];
 /// The checkerboard repeats 8 times across and 6 times down.
 static UVS: [Vec2; 4] = [Vec2::new(0.0, 6.0), Vec2::new(0.0, 0.0), Vec2::new(8.0, 0.0), Vec2::new(8.0, 6.0)];
-static INDICES: [u16; 6] = [0, 1, 2, 0, 2, 3];
 
 /// The wall: two triangles, normals and checkerboard UVs.
-pub static WALL: Mesh<'static> = match Mesh::new(&POSITIONS, &NORMALS, &INDICES) {
-    Ok(m) => match m.with_uvs(&UVS) {
-        Ok(m) => m,
-        Err(_) => panic!("one UV per vertex"),
-    },
-    Err(_) => panic!("invalid built-in mesh"),
-};
+pub static WALL: Mesh<'static> = valid(match Mesh::new(&POSITIONS, &NORMALS, &QUAD_INDICES) {
+    Ok(m) => m.with_uvs(&UVS),
+    Err(e) => Err(e),
+});
 
 /// One unit behind the origin, looking along +z: the wall overfills the
 /// view on every side (its corners are off screen, within the guard band).

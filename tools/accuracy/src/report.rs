@@ -347,10 +347,10 @@ fn recommendation(results: &Results, target: &Target) -> String {
     );
     // The wording follows the figures: which mode is closer, and whether
     // 16.16's texture coordinates lag behind far down the floor.
-    let closeness = match e(float, &shaded).zip(e(fixed, &shaded)).map(|(a, b)| a.psnr - b.psnr) {
-        Some(d) if d >= 0.05 => "closer to",
-        Some(d) if d <= -0.05 => "farther from",
-        _ => "as close to",
+    let (closeness, than) = match e(float, &shaded).zip(e(fixed, &shaded)).map(|(a, b)| a.psnr - b.psnr) {
+        Some(d) if d >= 0.05 => ("closer to", "than"),
+        Some(d) if d <= -0.05 => ("farther from", "than"),
+        _ => ("as close to", "as"),
     };
     let (uv_fixed, uv_float) = (e(fixed, &textured).and_then(|e| e.uv_p99), e(float, &textured).and_then(|e| e.uv_p99));
     let texels = match uv_fixed.zip(uv_float) {
@@ -362,7 +362,7 @@ fn recommendation(results: &Results, target: &Target) -> String {
     let _ = writeln!(
         r,
         "- **Cortex-M4F, M33F (STM32F4, RP2350): `FloatingPoint`.** With an FPU, `f32` takes {} on the shaded \
-         scenes and is {closeness} the exact image ({}) than {texels} (UV p99 {} against {} texels).",
+         scenes and is {closeness} the exact image ({}) {than} {texels} (UV p99 {} against {} texels).",
         pct(t(float, &shaded, "m4f"), t(fixed, &shaded, "m4f")),
         db(e(float, &shaded), e(fixed, &shaded)),
         uv(uv_fixed),
