@@ -16,8 +16,9 @@
 //! pixel left of an edge is never also right of it.
 //!
 //! Attributes (depth and the effect's varyings) are plane equations set up
-//! once per triangle in `f32`, then stepped with one addition per pixel in
-//! the renderer's [`Interp`] scalar.
+//! once per triangle in the renderer's [`Interp`] scalar (`f32` in `f32`;
+//! integers only in fixed point, from the exact snapped offsets: see
+//! [`crate::math::FixedBasis`]), then stepped with one addition per pixel.
 
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
@@ -44,7 +45,7 @@ pub const fn guard(subpixel_bits: u32) -> i32 {
 /// equals [`DEPTH_CLEAR`], and the half unit of margin absorbs
 /// interpolation rounding at the vertices. "Nearer than stored" is then
 /// `new > stored`; ties keep the first fragment, like a "less" test on z.
-const DEPTH_RANGE: f32 = 65534.0;
+pub(crate) const DEPTH_RANGE: f32 = 65534.0;
 
 /// A vertex in window space, ready for setup.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -227,30 +228,27 @@ struct Plane<S> {
 }
 
 impl<S: Interp> Plane<S> {
-    /// The plane through three vertex values, `d` being the triangle's
-    /// shape relative to its top vertex (see [`Shape`]).
-    ///
-    /// `divided` planes (values times `1/w`, divided per pixel later) get
-    /// rounded gradients: the division magnifies their error, and the
-    /// accuracy study found truncation's bias shifting texels by a fifth of
-    /// one far down a floor. The others are truncated (cheaper; the error
-    /// stays under 2^-16 per pixel).
+    /// The plane through the values `a`, `b`, `c` at the vertices of a
+    /// triangle of shape `shape` (see [`Shape`]). A plane too steep to
+    /// step (see [`Interp::is_wide`]) is set up by [`Plane::far`] from the
+    /// values `exact` gives instead.
     #[inline(always)]
-    fn new(shape: &Shape, (va, vb, vc): (f32, f32, f32), (lo, hi): (f32, f32), divided: bool) -> Self {
-        let (d1, d2) = (vb - va, vc - va);
-        let dx = (d1 * shape.y2 - d2 * shape.y1) * shape.inv_area;
-        let dy = (d2 * shape.x1 - d1 * shape.x2) * shape.inv_area;
-        let (gx, gy) = if divided { (S::from_f32(dx), S::from_f32(dy)) } else { (S::gradient(dx), S::gradient(dy)) };
-        // 16.16 saturates gradients beyond ±32768 (a sliver's depth):
-        // checked on the converted integers, two compares that cost no
-        // float operation (in software on an M0+).
-        let wide = gx.is_wide() | gy.is_wide();
-        let at_a = S::from_f32(va);
-        let (lo, hi) = (S::from_f32(lo), S::from_f32(hi));
-        // Not `then_some`: its argument is built even when unused, and each
-        // conversion to f64 is a library call on an FPU without doubles.
-        let wide = if wide { Some((va, dx, dy)) } else { None };
-        Self { at_a, dx: gx, dy: gy, lo, hi, wide }
+    fn new(shape: &Shape<S>, (a, b, c): (S, S, S), (lo, hi): (f32, f32), exact: impl FnOnce() -> (f32, f32, f32)) -> Self {
+        let (gx, gy) = S::gradients(&shape.basis, a, b, c);
+        // Fixed point saturates gradients beyond ±32768 (a sliver's
+        // depth): checked on the integers, two compares that cost no float
+        // operation (in software on an M0+).
+        if gx.is_wide() | gy.is_wide() {
+            return Self::far(shape, exact(), (lo, hi));
+        }
+        Self { at_a: a, dx: gx, dy: gy, lo: S::from_f32(lo), hi: S::from_f32(hi), wide: None }
+    }
+
+    /// [`Plane::new`] from values in `f32`.
+    #[inline(always)]
+    fn from_f32(shape: &Shape<S>, (va, vb, vc): (f32, f32, f32), range: (f32, f32)) -> Self {
+        let convert = S::from_f32_truncated;
+        Self::new(shape, (convert(va), convert(vb), convert(vc)), range, || (va, vb, vc))
     }
 
     /// [`Plane::new`] for a triangle reaching toward the guard band, in
@@ -259,7 +257,7 @@ impl<S: Interp> Plane<S> {
     /// of `f64` does not matter.
     #[cold]
     #[inline(never)]
-    fn far(shape: &Shape, (va, vb, vc): (f32, f32, f32), (lo, hi): (f32, f32)) -> Self {
+    fn far(shape: &Shape<S>, (va, vb, vc): (f32, f32, f32), (lo, hi): (f32, f32)) -> Self {
         let (d1, d2) = (vb - va, vc - va);
         let (x1, y1, x2, y2) = (shape.ox1 as f64, shape.oy1 as f64, shape.ox2 as f64, shape.oy2 as f64);
         let area = x1 * y2 - y1 * x2;
@@ -289,7 +287,7 @@ impl<S: Interp> Plane<S> {
     /// stepped: the plane is linear, so it suffices that its values at the
     /// three vertices are.
     #[inline(always)]
-    fn safe(&self, shape: &Shape, f: u32) -> bool {
+    fn safe(&self, shape: &Shape<S>, f: u32) -> bool {
         // `&`, not `&&`: straight-line code, no branch per test.
         self.wide.is_none()
             & S::plane_within(self.at_a, self.dx, self.dy, (shape.ox1, shape.oy1), (shape.ox2, shape.oy2), f, self.lo, self.hi)
@@ -318,41 +316,31 @@ impl<S: Interp> Plane<S> {
 }
 
 /// A triangle's edge vectors from its top vertex, for plane setup.
-struct Shape {
-    /// `b - a` and `c - a` in pixels.
-    x1: f32,
-    y1: f32,
-    x2: f32,
-    y2: f32,
-    /// `1 / ((b - a) × (c - a))` in 1/pixels².
-    inv_area: f32,
+struct Shape<S: Interp> {
     /// `b - a` and `c - a` in units of `2^-f` pixels.
     ox1: i32,
     oy1: i32,
     ox2: i32,
     oy2: i32,
+    /// What turns value differences into gradients.
+    basis: S::Basis,
     /// Whether an offset exceeds 2^16 pixels: then gradients are computed
-    /// in `f64` (see [`Plane::new`]).
+    /// in `f64` (see [`Plane::far`]).
     far: bool,
     /// Units per pixel, `2^f`.
     per_pixel: u32,
 }
 
-impl Shape {
-    /// The shape of a triangle relative to its top vertex `a`.
+impl<S: Interp> Shape<S> {
+    /// The shape of a sorted triangle relative to its top vertex `a`.
     #[inline(always)]
-    fn new<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c: &ScreenVertex<V>, f: u32) -> Self {
+    fn new<const V: usize>(t: &Sorted<'_, V>, f: u32) -> Self {
+        let (a, b, c) = (t.a, t.b, t.c);
         // Snapped coordinates are within ±2^29, so their differences fit i32.
         let (ox1, oy1, ox2, oy2) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
-        let unit = 1.0 / (1u32 << f) as f32;
-        let (x1, y1, x2, y2) = (ox1 as f32 * unit, oy1 as f32 * unit, ox2 as f32 * unit, oy2 as f32 * unit);
-        // In f32 the area is exact enough on screen; for long slivers
-        // reaching toward the guard band `x1 * y2 - y1 * x2` cancels
-        // catastrophically (terms near 2^56 units², area near 2^35), and
-        // those take the f64 path (`Plane::far`).
-        let inv_area = 1.0 / (x1 * y2 - y1 * x2);
         let far = ox1.unsigned_abs().max(oy1.unsigned_abs()).max(ox2.unsigned_abs()).max(oy2.unsigned_abs()) >> f > 1 << 16;
-        Shape { x1, y1, x2, y2, inv_area, ox1, oy1, ox2, oy2, far, per_pixel: 1 << f }
+        let basis = S::basis([ox1, oy1, ox2, oy2], t.area2, f);
+        Shape { ox1, oy1, ox2, oy2, basis, far, per_pixel: 1 << f }
     }
 }
 
@@ -362,6 +350,8 @@ struct Sorted<'v, const V: usize> {
     a: &'v ScreenVertex<V>,
     b: &'v ScreenVertex<V>,
     c: &'v ScreenVertex<V>,
+    /// Twice the signed area (see [`signed_area2`]), nonzero.
+    area2: i64,
     /// Whether the middle vertex is left of the long edge `a`–`c`.
     mid_left: bool,
     /// First rows at or below each vertex.
@@ -376,8 +366,8 @@ struct Sorted<'v, const V: usize> {
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
 ///
-/// Most triangles take the lean path here: planes set up in `f32`,
-/// converted to `S` once, stepped with additions. A triangle whose stepped
+/// Most triangles take the lean path here: vertex values converted to `S`
+/// once, planes set up in `S` and stepped with additions. A triangle whose stepped
 /// values could leave their ranges (a wrapping scalar's rounding, or a
 /// triangle reaching toward the guard band) takes [`rasterize_careful`].
 #[inline(never)]
@@ -418,7 +408,7 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
         return;
     }
     // With y down, a negative area puts the middle vertex left of the long edge.
-    let t = Sorted { a, b, c, mid_left: area < 0, y_top, y_mid: first_row_at_or_below(b.y, subpixel_bits), y_bot };
+    let t = Sorted { a, b, c, area2: area, mid_left: area < 0, y_top, y_mid: first_row_at_or_below(b.y, subpixel_bits), y_bot };
     let width = target.width as i32;
     // Coverage first: a small triangle often covers no pixel center at all,
     // and then needs no planes.
@@ -426,7 +416,7 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     let Some(mut span_at) = rows.next_span() else {
         return;
     };
-    let shape = Shape::new(a, b, c, f);
+    let shape = Shape::<S>::new(&t, f);
     let planes = Planes::<S, V>::new::<C, E, P>(&shape, &t, effect);
     // With a wrapping scalar, a plane whose rounded gradients leave its
     // range at a vertex takes the careful path (clamped span ends), and a
@@ -500,13 +490,13 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
     Z: DepthFormat,
 {
     let n = E::VARYINGS.min(V);
-    let shape = &Shape::new(t.a, t.b, t.c, f);
+    let shape = &Shape::<S>::new(t, f);
     let Planes { mut z, mut q, mut vary, bounds } = Planes::<S, V>::new::<C, E, P>(shape, t, effect);
     if shape.far {
         // A triangle reaching toward the guard band gets its planes again
         // in f64 (see `Plane::far`).
         let values = VertexValues::<V>::new::<C, E, P, S>(t, effect);
-        z = Plane::far(shape, values.z, values.z_range);
+        z = Plane::far(shape, values.depths::<S>(t), values.z_range);
         if P::CORRECT {
             q = Plane::far(shape, values.q, values.q_range);
         }
@@ -597,7 +587,6 @@ impl<C, Z> StripTarget<'_, C, Z> {
 /// A triangle's values at its three sorted vertices, as planes are set up
 /// from them, with the ranges they must stay in.
 struct VertexValues<const V: usize> {
-    z: (f32, f32, f32),
     z_range: (f32, f32),
     /// Normalized `1 / w` times [`Interp::Q_SCALE`] (`(1, 1, 1)` without
     /// perspective correction).
@@ -612,11 +601,17 @@ struct VertexValues<const V: usize> {
 }
 
 impl<const V: usize> VertexValues<V> {
+    /// The depth values of a triangle's vertices in `f32` (see
+    /// [`Interp::depth`]).
+    fn depths<S: Interp>(&self, t: &Sorted<'_, V>) -> (f32, f32, f32) {
+        let depth = |v: &ScreenVertex<V>| <f32 as Interp>::depth(v.z) * S::DEPTH_SCALE;
+        (depth(t.a), depth(t.b), depth(t.c))
+    }
+
     #[inline(always)]
     fn new<C: Color, E: Effect, P: Perspective, S: Interp>(t: &Sorted<'_, V>, effect: &E) -> Self {
         let (a, b, c) = (t.a, t.b, t.c);
         // Depth in stored units, times the scalar's depth scale.
-        let depth = |v: &ScreenVertex<V>| ((1.0 - v.z) * DEPTH_RANGE + 1.5) * S::DEPTH_SCALE;
         // Perspective-correct varyings are interpolated as value * q', with
         // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
         let q = if P::CORRECT {
@@ -655,7 +650,6 @@ impl<const V: usize> VertexValues<V> {
             }
         }
         Self {
-            z: (depth(a), depth(b), depth(c)),
             z_range: (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE),
             q: (q.0 * scale, q.1 * scale, q.2 * scale),
             // Normalized q is at most 1 at the vertices; the margin above
@@ -680,11 +674,14 @@ struct Planes<S, const V: usize> {
 
 impl<S: Interp, const V: usize> Planes<S, V> {
     #[inline(always)]
-    fn new<C: Color, E: Effect, P: Perspective>(shape: &Shape, t: &Sorted<'_, V>, effect: &E) -> Self {
+    fn new<C: Color, E: Effect, P: Perspective>(shape: &Shape<S>, t: &Sorted<'_, V>, effect: &E) -> Self {
         let values = VertexValues::<V>::new::<C, E, P, S>(t, effect);
-        let z = Plane::new(shape, values.z, values.z_range, false);
+        // Depth from window z in the scalar itself (integers only in fixed
+        // point), not through f32.
+        let (a, b, c) = (S::depth(t.a.z), S::depth(t.b.z), S::depth(t.c.z));
+        let z = Plane::new(shape, (a, b, c), values.z_range, || values.depths::<S>(t));
         let q = if P::CORRECT {
-            Plane::new(shape, values.q, values.q_range, true)
+            Plane::from_f32(shape, values.q, values.q_range)
         } else {
             let (one, zero) = (S::from_f32(1.0), S::default());
             Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one, wide: None }
@@ -692,7 +689,7 @@ impl<S: Interp, const V: usize> Planes<S, V> {
         let mut vary = [q; V];
         let mut bounds = [(S::default(), S::default()); MAX_VARYINGS];
         for i in 0..E::VARYINGS.min(V) {
-            vary[i] = Plane::new(shape, values.vary[i], values.ranges[i], P::CORRECT);
+            vary[i] = Plane::from_f32(shape, values.vary[i], values.ranges[i]);
             bounds[i] = (S::from_f32(values.bounds[i].0), S::from_f32(values.bounds[i].1));
         }
         Self { z, q, vary, bounds }
@@ -701,7 +698,7 @@ impl<S: Interp, const V: usize> Planes<S, V> {
     /// Whether every plane the material uses stays within its range at
     /// every pixel when stepped.
     #[inline(always)]
-    fn safe<E: Effect, P: Perspective, D: DepthMode>(&self, shape: &Shape, f: u32) -> bool {
+    fn safe<E: Effect, P: Perspective, D: DepthMode>(&self, shape: &Shape<S>, f: u32) -> bool {
         // Early returns: each plane's evaluations are done when tested, not
         // all first and kept (spilled) for a combined test.
         if (D::TEST || D::WRITE) && !self.z.safe(shape, f) {

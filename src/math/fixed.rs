@@ -52,6 +52,17 @@ impl Fixed {
         }
     }
 
+    /// `v * 2^k` truncated toward zero to an integer, saturating, NaN
+    /// giving zero, for `0 <= k <= 32` (no float operation without an FPU).
+    #[inline]
+    pub(crate) fn scaled_truncated(v: f32, k: i32) -> i32 {
+        if super::HARD_FLOAT {
+            (v * (1u64 << k) as f32) as i32
+        } else {
+            scaled_from_bits(v, k, false)
+        }
+    }
+
     /// The value as `f32`.
     #[inline]
     pub fn to_f32(self) -> f32 {

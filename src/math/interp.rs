@@ -9,7 +9,7 @@
 //! derived from those three numbers with [`Interp::plane_at`] and
 //! [`Interp::plane_within`], so stepping and checking agree exactly.
 
-use super::Fixed;
+use super::{mul_wide, Fixed};
 
 /// A number type that plane equations are stepped in.
 ///
@@ -32,14 +32,30 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     const WRAPS: bool;
     /// From `f32` (saturating; NaN gives zero).
     fn from_f32(v: f32) -> Self;
-    /// A gradient from `f32`: like [`Interp::from_f32`] but truncated
-    /// toward zero in fixed point (one conversion instruction instead of a
-    /// rounding sequence; the error, under 2^-16 per pixel, stays far below
-    /// a color or depth step across any span on screen).
-    fn gradient(v: f32) -> Self;
+    /// Like [`Interp::from_f32`], but truncated toward zero in fixed point:
+    /// a vertex value for plane setup, in one conversion instruction where
+    /// rounding takes a sequence (the difference, under 2^-16, stays far
+    /// below a color or depth step).
+    fn from_f32_truncated(v: f32) -> Self;
+    /// A triangle's shape prepared once for the gradients of all its
+    /// planes ([`Interp::basis`]).
+    type Basis: Copy;
+    /// The basis of a triangle whose second and third vertices lie at
+    /// `o = [ox1, oy1, ox2, oy2]` units of `2^-f` pixels from its first,
+    /// `area2 = ox1 * oy2 - oy1 * ox2` being nonzero.
+    fn basis(o: [i32; 4], area2: i64, f: u32) -> Self::Basis;
+    /// The gradients per pixel `(dx, dy)` of the plane through the values
+    /// `a`, `b`, `c` at the triangle's three vertices. Fixed point
+    /// saturates gradients it cannot represent (so that
+    /// [`Interp::is_wide`] holds for them).
+    fn gradients(basis: &Self::Basis, a: Self, b: Self, c: Self) -> (Self, Self);
     /// Whether a gradient is too steep to step precisely (fixed point:
     /// beyond ±32,000 per pixel, near where 16.16 saturates); `f32` never is.
     fn is_wide(self) -> bool;
+    /// The interpolated depth of window depth `z` (in `[0, 1]`, smaller
+    /// nearer): `((1 - z) * 65534 + 1.5) * DEPTH_SCALE`, stored units
+    /// from 1 (far) to 65535.5 (near) scaled (see [`Interp::DEPTH_SCALE`]).
+    fn depth(z: f32) -> Self;
     /// To `f32`.
     fn to_f32(self) -> f32;
     /// `self + d`.
@@ -90,6 +106,95 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self;
 }
 
+/// [`Interp::Basis`] of `f32`: the edge vectors in pixels and the
+/// reciprocal of the area they span.
+#[derive(Clone, Copy, Debug)]
+pub struct FloatBasis {
+    x1: f32,
+    y1: f32,
+    x2: f32,
+    y2: f32,
+    inv_area: f32,
+}
+
+/// [`Interp::Basis`] of [`Fixed`]: plane gradients in integers only, so
+/// that a core without an FPU sets up a triangle without a float
+/// operation (each one a library call of about a hundred instructions
+/// there) and every core gets the same bits.
+///
+/// A gradient is a combination of the value differences `d1 = b - a` and
+/// `d2 = c - a` at the other two vertices, `dx = (d1 oy2 - d2 oy1) 2^f /
+/// area2` and `dy = (d2 ox1 - d1 ox2) 2^f / area2`. The four coefficients
+/// are computed once per triangle, scaled by a common power of two to
+/// about 30 significant bits: `dx = (d1 k[0] + d2 k[1]) / 2^shift`, `dy =
+/// (d1 k[2] + d2 k[3]) / 2^shift`, rounded. Their relative error, about
+/// 2^-28, is below that of `f32` (2^-24, and worse for slivers, whose area
+/// cancels in `f32`: it is exact here).
+#[derive(Clone, Copy, Debug)]
+pub struct FixedBasis {
+    k: [i32; 4],
+    /// In `1..=62`.
+    shift: u32,
+    /// `2^(shift - 1)`, for rounding.
+    half: i64,
+    /// Gradients too steep for 32 bits whatever the values (a sliver far
+    /// thinner than a pixel): [`Interp::gradients`] saturates them.
+    steep: bool,
+}
+
+impl FixedBasis {
+    #[inline(always)]
+    fn new([ox1, oy1, ox2, oy2]: [i32; 4], area2: i64, f: u32) -> Self {
+        const STEEP: FixedBasis = FixedBasis { k: [0; 4], shift: 1, half: 0, steep: true };
+        let area = area2.unsigned_abs();
+        if area == 0 {
+            return STEEP;
+        }
+        // 1 / area = r * 2^(n - 93), r in (2^29, 2^30): `m` is the area's
+        // top 32 bits, `r0` estimates 2^61 / m from a 32-bit division of
+        // its top 16 (relative error below 2^-14), and one Newton step
+        // squares that error.
+        let n = area.leading_zeros();
+        let m = ((area << n) >> 32) as u32;
+        let r0 = (u32::MAX / (m >> 16)) << 13;
+        let e = (1i64 << 61) - (m as u64 * r0 as u64) as i64;
+        let r = (r0 as i64 + (mul_wide(r0 as i32, (e >> 16) as i32) >> 45)).min((1 << 30) - 1) as i32;
+        let r2 = if area2 < 0 { -(r << 1) } else { r << 1 };
+        // Offsets below 2^t, t <= 30: each coefficient o r 2^-t is the high
+        // word of (o 2^(31 - t)) (2 r), below 2^30 (one multiply-high).
+        let span = ox1.unsigned_abs() | oy1.unsigned_abs() | ox2.unsigned_abs() | oy2.unsigned_abs();
+        let t = 32 - span.leading_zeros();
+        let up = 31 - t;
+        let k = |o: i32| (mul_wide(o << up, r2) >> 32) as i32;
+        // dx = (d1 oy2 - d2 oy1) r 2^(f + n - 93) = (d1 k0 + d2 k1) 2^(t + f + n - 93).
+        let shift = 93 - (t + f + n) as i32;
+        if shift < 1 {
+            return STEEP;
+        }
+        let shift = shift.min(62) as u32;
+        Self { k: [k(oy2), k(-oy1), k(-ox2), k(ox1)], shift, half: 1 << (shift - 1), steep: false }
+    }
+
+    #[inline(always)]
+    fn gradients(&self, a: Fixed, b: Fixed, c: Fixed) -> (Fixed, Fixed) {
+        if self.steep {
+            return (Fixed::from_bits(i32::MAX), Fixed::from_bits(i32::MAX));
+        }
+        // Values outside every range saturate here; the range check then
+        // rejects the plane (its far vertex lands far off).
+        let (d1, d2) = (b.to_bits().saturating_sub(a.to_bits()), c.to_bits().saturating_sub(a.to_bits()));
+        let gradient = |k1: i32, k2: i32| {
+            // Each product is below 2^61, so the sum fits.
+            let g = (mul_wide(d1, k1) + mul_wide(d2, k2) + self.half) >> self.shift;
+            // It fits 32 bits when the high word is the low word's sign
+            // (one compare); beyond, it is far past what `is_wide` allows.
+            let (low, high) = (g as i32, (g >> 32) as i32);
+            Fixed::from_bits(if high == low >> 31 { low } else { i32::MAX })
+        };
+        (gradient(self.k[0], self.k[1]), gradient(self.k[2], self.k[3]))
+    }
+}
+
 impl Interp for f32 {
     const NAME: &'static str = "f32";
     const DEPTH_SCALE: f32 = 1.0;
@@ -104,12 +209,32 @@ impl Interp for f32 {
         }
     }
     #[inline(always)]
-    fn gradient(v: f32) -> Self {
+    fn from_f32_truncated(v: f32) -> Self {
         Self::from_f32(v)
+    }
+    type Basis = FloatBasis;
+    #[inline(always)]
+    fn basis(o: [i32; 4], _: i64, f: u32) -> FloatBasis {
+        let unit = 1.0 / (1u32 << f) as f32;
+        let [x1, y1, x2, y2] = o.map(|v| v as f32 * unit);
+        // In f32 the area is exact enough on screen; for long slivers
+        // reaching toward the guard band it cancels catastrophically, and
+        // those take the f64 path (see `raster::Plane::far`).
+        FloatBasis { x1, y1, x2, y2, inv_area: 1.0 / (x1 * y2 - y1 * x2) }
+    }
+    #[inline(always)]
+    fn gradients(basis: &FloatBasis, a: Self, b: Self, c: Self) -> (Self, Self) {
+        let FloatBasis { x1, y1, x2, y2, inv_area } = *basis;
+        let (d1, d2) = (b - a, c - a);
+        (Self::from_f32((d1 * y2 - d2 * y1) * inv_area), Self::from_f32((d2 * x1 - d1 * x2) * inv_area))
     }
     #[inline(always)]
     fn is_wide(self) -> bool {
         false
+    }
+    #[inline(always)]
+    fn depth(z: f32) -> Self {
+        Self::from_f32((1.0 - z) * crate::raster::DEPTH_RANGE + 1.5)
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -231,14 +356,31 @@ impl Interp for Fixed {
         Fixed::from_f32(v)
     }
     #[inline(always)]
-    fn gradient(v: f32) -> Self {
+    fn from_f32_truncated(v: f32) -> Self {
         Fixed::truncate_f32(v)
+    }
+    type Basis = FixedBasis;
+    #[inline(always)]
+    fn basis(o: [i32; 4], area2: i64, f: u32) -> FixedBasis {
+        FixedBasis::new(o, area2, f)
+    }
+    #[inline(always)]
+    fn gradients(basis: &FixedBasis, a: Self, b: Self, c: Self) -> (Self, Self) {
+        basis.gradients(a, b, c)
     }
     #[inline(always)]
     fn is_wide(self) -> bool {
         // `|g| >= LIMIT` as one add and one unsigned compare.
         const LIMIT: u32 = 32_000 << Fixed::FRAC_BITS;
         (self.to_bits() as u32).wrapping_add(LIMIT - 1) > 2 * LIMIT - 2
+    }
+    #[inline(always)]
+    fn depth(z: f32) -> Self {
+        // z * 2^30 (z within [0, 1]; rounding can leave it by an ulp), then
+        // (1 - z) * 65534 + 1.5 halved, in units of 2^-16: the product is
+        // below 2^46 and the result below 2^31.
+        let z = Fixed::scaled_truncated(z, 30).clamp(0, 1 << 30);
+        Fixed::from_bits(((mul_wide((1 << 30) - z, 65534) >> 15) + (3 << 14)) as i32)
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -459,6 +601,70 @@ mod tests {
             let plain = (lo.to_bits() as i64..=hi.to_bits() as i64).contains(&v) && (lo..=hi).contains(&v0);
             assert_eq!(Fixed::plane_within(v0, dx, dy, (ox, oy), (0, 0), f, lo, hi), plain, "{v0:?} {dx:?} {dy:?} {ox} {oy} {f}");
         }
+    }
+
+    #[test]
+    fn integer_gradients_match_the_exact_quotient() {
+        // Triangles from a pixel to the guard band, slivers included,
+        // with values from flat to spanning the whole 32-bit range; the
+        // gradients against the exact quotient in f64: off by the rounding
+        // plus what the coefficients' last places weigh (about 2^-28 of
+        // the terms `d1 oy2` and `d2 oy1`, so of the gradient unless they
+        // cancel; f32 setup is off by 2^-24 of them).
+        let mut seed = 0x2545_F491u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let mut checked = 0;
+        for _ in 0..200_000 {
+            let f = 1 + next() % 9;
+            let reach = 1i64 << (next() % (30 - f));
+            let mut offset = || ((next() as i64 % (2 * reach + 1)) - reach) as i32;
+            let o = [offset(), offset(), offset(), offset()];
+            let area2 = o[0] as i64 * o[3] as i64 - o[1] as i64 * o[2] as i64;
+            if area2 == 0 {
+                continue;
+            }
+            // Below 2^30, so that differences fit (beyond, they saturate
+            // and the range check rejects the plane).
+            let scale = 1 + next() % 31;
+            let mut value = || Fixed::from_bits((next() as i32) >> scale);
+            let (a, b, c) = (value(), value(), value());
+            let basis = Fixed::basis(o, area2, f);
+            let (gx, gy) = Fixed::gradients(&basis, a, b, c);
+            let (d1, d2) = ((b.to_bits() - a.to_bits()) as f64, (c.to_bits() - a.to_bits()) as f64);
+            let per_pixel = (1u64 << f) as f64 / area2 as f64;
+            let exact_x = (d1 * o[3] as f64 - d2 * o[1] as f64) * per_pixel;
+            let exact_y = (d2 * o[0] as f64 - d1 * o[2] as f64) * per_pixel;
+            for (got, exact) in [(gx, exact_x), (gy, exact_y)] {
+                if exact.abs() >= 2_147_483_648.0 {
+                    assert!(got.is_wide(), "{o:?} {area2} f={f}: {got:?} for {exact}");
+                    continue;
+                }
+                if got.to_bits() == i32::MAX {
+                    // Saturated: only where the basis itself is too steep.
+                    assert!(basis.steep, "{o:?} {area2} f={f}: saturated at {exact}");
+                    continue;
+                }
+                // Rounding, and each coefficient within 3 units of its
+                // last place (its floor and the reciprocal's 2^-29).
+                let off = (got.to_bits() as f64 - exact).abs();
+                let bound = 0.5 + 3.0 * (d1.abs() + d2.abs()) / (1u64 << basis.shift) as f64;
+                assert!(
+                    off <= bound,
+                    "{o:?} {area2} f={f} ({} {} {}): {} against {exact}, off {off}",
+                    a.to_bits(),
+                    b.to_bits(),
+                    c.to_bits(),
+                    got.to_bits()
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked > 300_000, "{checked}");
     }
 
     #[test]

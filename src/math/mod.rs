@@ -17,7 +17,7 @@ mod vector;
 
 pub use elementary::{cos, rsqrt, sin, sqrt, tan};
 pub use fixed::Fixed;
-pub use interp::Interp;
+pub use interp::{FixedBasis, FloatBasis, Interp};
 pub use matrix::{Mat3, Mat4};
 pub use vector::{Vec2, Vec3, Vec4};
 
