@@ -39,7 +39,7 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     fn from_f32_truncated(v: f32) -> Self;
     /// A triangle's shape prepared once for the gradients of all its
     /// planes ([`Interp::basis`]).
-    type Basis: Copy;
+    type Basis: Copy + core::fmt::Debug;
     /// The basis of a triangle whose second and third vertices lie at
     /// `o = [ox1, oy1, ox2, oy2]` units of `2^-f` pixels from its first,
     /// `area2 = ox1 * oy2 - oy1 * ox2` being nonzero.
@@ -96,6 +96,14 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// `(ox, oy)` units of `2^-f` pixels from its origin (wrapping in
     /// fixed point: exactly what stepping from the origin would give).
     fn plane_at(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> Self;
+    /// Whether the plane through `a`, `b`, `c` (a triangle's vertex values)
+    /// with the gradients [`Interp::gradients`] gives stays within
+    /// `[lo, hi]` at the three vertices when stepped, decided from the
+    /// values alone: they lie far enough inside the range for any error
+    /// the gradients can have (or the plane is constant). A sufficient
+    /// condition, cheaper than [`Interp::plane_within`], which decides the
+    /// rest. Always true where stepping cannot wrap (`f32`).
+    fn clear_of_bounds(basis: &Self::Basis, a: Self, b: Self, c: Self, lo: Self, hi: Self) -> bool;
     /// Whether the plane's exact values at its origin and at the two
     /// offsets `b` and `c` (a triangle's other vertices) are all in
     /// `[lo, hi]`.
@@ -140,12 +148,17 @@ pub struct FixedBasis {
     /// Gradients too steep for 32 bits whatever the values (a sliver far
     /// thinner than a pixel): [`Interp::gradients`] saturates them.
     steep: bool,
+    /// A bound on how far stepping from the first vertex can land from
+    /// the value at another vertex (in units of 2^-16, from the
+    /// coefficients' error: see [`Interp::clear_of_bounds`]), or a large
+    /// value where it is not small.
+    margin: i32,
 }
 
 impl FixedBasis {
     #[inline(always)]
     fn new([ox1, oy1, ox2, oy2]: [i32; 4], area2: i64, f: u32) -> Self {
-        const STEEP: FixedBasis = FixedBasis { k: [0; 4], shift: 1, half: 0, steep: true };
+        const STEEP: FixedBasis = FixedBasis { k: [0; 4], shift: 1, half: 0, steep: true, margin: i32::MAX };
         let area = area2.unsigned_abs();
         if area == 0 {
             return STEEP;
@@ -171,8 +184,21 @@ impl FixedBasis {
         if shift < 1 {
             return STEEP;
         }
+        // Each gradient is within 1/2 + 4 (|d1| + |d2|) / 2^shift of the
+        // exact one (its rounding; each coefficient within 4 units: its
+        // floor and the reciprocal's 2^-28), and |d1| + |d2| < 2^33 for
+        // values in any range. Over offsets |ox| + |oy| < 2^(t + 1), in
+        // units of 2^-f pixels, stepping then lands within 2^(t - f) +
+        // 2^(36 + t - f - shift) of the exact plane, plus 1 for the floor.
+        let (t, f) = (t as i32, f as i32);
+        let rounding = if t > f { 1 << (t - f) } else { 1 };
+        let exponent = 36 + t - f - shift;
+        // (Beyond 2^28, no plane is clear of its bounds.)
+        let margin = if exponent > 28 { i32::MAX } else { rounding + (1 << exponent.max(0)) + 2 };
+        // Never above 62: t + n >= 63 - t (the area is below 2^(2t + 1)),
+        // so shift <= 59.
         let shift = shift.min(62) as u32;
-        Self { k: [k(oy2), k(-oy1), k(-ox2), k(ox1)], shift, half: 1 << (shift - 1), steep: false }
+        Self { k: [k(oy2), k(-oy1), k(-ox2), k(ox1)], shift, half: 1 << (shift - 1), steep: false, margin }
     }
 
     #[inline(always)]
@@ -227,6 +253,10 @@ impl Interp for f32 {
         let FloatBasis { x1, y1, x2, y2, inv_area } = *basis;
         let (d1, d2) = (b - a, c - a);
         (Self::from_f32((d1 * y2 - d2 * y1) * inv_area), Self::from_f32((d2 * x1 - d1 * x2) * inv_area))
+    }
+    #[inline(always)]
+    fn clear_of_bounds(_: &FloatBasis, _: Self, _: Self, _: Self, _: Self, _: Self) -> bool {
+        true
     }
     #[inline(always)]
     fn is_wide(self) -> bool {
@@ -367,6 +397,22 @@ impl Interp for Fixed {
     #[inline(always)]
     fn gradients(basis: &FixedBasis, a: Self, b: Self, c: Self) -> (Self, Self) {
         basis.gradients(a, b, c)
+    }
+    #[inline(always)]
+    fn clear_of_bounds(basis: &FixedBasis, a: Self, b: Self, c: Self, lo: Self, hi: Self) -> bool {
+        // Stepping from `a` reaches `b` within `margin - 1` below and
+        // `margin - 2` above it (the gradients' error over the triangle,
+        // and the floor of the last step); a constant plane is exact.
+        // In 32-bit unsigned arithmetic: `v` is in `[lo + margin, hi -
+        // margin]` when `v - lo - margin` (wrapping) is at most `width - 2
+        // margin`, and ranges are narrower than 2^32.
+        let (a, b, c, lo) = (a.to_bits() as u32, b.to_bits() as u32, c.to_bits() as u32, lo.to_bits() as u32);
+        let width = (hi.to_bits() as u32).wrapping_sub(lo);
+        let margin = basis.margin as u32;
+        let inner_width = width.wrapping_sub(2 * margin);
+        let inner = |v: u32| v.wrapping_sub(lo).wrapping_sub(margin) <= inner_width;
+        let constant = (b == a) & (c == a);
+        (a.wrapping_sub(lo) <= width) & (constant | ((width >= 2 * margin) & inner(b) & inner(c)))
     }
     #[inline(always)]
     fn is_wide(self) -> bool {
@@ -649,10 +695,11 @@ mod tests {
                     assert!(basis.steep, "{o:?} {area2} f={f}: saturated at {exact}");
                     continue;
                 }
-                // Rounding, and each coefficient within 3 units of its
-                // last place (its floor and the reciprocal's 2^-29).
+                // Rounding, and each coefficient within 4 units of its
+                // last place (its floor and the reciprocal's 2^-28), the
+                // bound `FixedBasis::new` derives its margin from.
                 let off = (got.to_bits() as f64 - exact).abs();
-                let bound = 0.5 + 3.0 * (d1.abs() + d2.abs()) / (1u64 << basis.shift) as f64;
+                let bound = 0.5 + 4.0 * (d1.abs() + d2.abs()) / (1u64 << basis.shift) as f64;
                 assert!(
                     off <= bound,
                     "{o:?} {area2} f={f} ({} {} {}): {} against {exact}, off {off}",
@@ -665,6 +712,57 @@ mod tests {
             }
         }
         assert!(checked > 300_000, "{checked}");
+    }
+
+    #[test]
+    fn planes_cleared_by_their_values_pass_the_exact_check() {
+        // `clear_of_bounds` must imply `plane_within`: triangles of every
+        // size and shape, values anywhere in ranges as narrow as a color
+        // channel's and as wide as depth's or texture coordinates', many
+        // of them next to a bound.
+        let mut seed = 0x9E37_79B9u32;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let ranges = [(0, 256 << 16), (1 << 15, 65535 << 15), (-30_000 << 16, 30_000 << 16), (-66_191, 66_191)];
+        let (mut cleared, mut exact_only) = (0, 0);
+        for _ in 0..300_000 {
+            let f = 1 + next() % 9;
+            let reach = 1i64 << (next() % (30 - f));
+            let mut offset = || ((next() as i64 % (2 * reach + 1)) - reach) as i32;
+            let o = [offset(), offset(), offset(), offset()];
+            let area2 = o[0] as i64 * o[3] as i64 - o[1] as i64 * o[2] as i64;
+            if area2 == 0 {
+                continue;
+            }
+            let (lo, hi) = ranges[next() as usize % ranges.len()];
+            let width = (hi as i64 - lo as i64) as u64;
+            let mut value = || {
+                let near = next() % (1 << (next() % 24)) as u32;
+                let v = match next() % 3 {
+                    0 => lo as i64 + near as i64,
+                    1 => hi as i64 - near as i64,
+                    _ => lo as i64 + ((next() as u64 * width) >> 32) as i64,
+                };
+                Fixed::from_bits(v.clamp(lo as i64, hi as i64) as i32)
+            };
+            let (a, b, c) = (value(), value(), value());
+            let basis = Fixed::basis(o, area2, f);
+            let (gx, gy) = Fixed::gradients(&basis, a, b, c);
+            let (lo, hi) = (Fixed::from_bits(lo), Fixed::from_bits(hi));
+            let exact = !gx.is_wide() && !gy.is_wide() && Fixed::plane_within(a, gx, gy, (o[0], o[1]), (o[2], o[3]), f, lo, hi);
+            if Fixed::clear_of_bounds(&basis, a, b, c, lo, hi) && !gx.is_wide() && !gy.is_wide() {
+                assert!(exact, "{o:?} {area2} f={f} {basis:?}: {a:?} {b:?} {c:?} in {lo:?}..{hi:?}");
+                cleared += 1;
+            } else if exact {
+                exact_only += 1;
+            }
+        }
+        // Both outcomes occur often: the test is not vacuous.
+        assert!(cleared > 50_000 && exact_only > 10_000, "{cleared} {exact_only}");
     }
 
     #[test]
