@@ -384,7 +384,7 @@ struct Sorted<'v, const V: usize> {
 /// Most triangles take the lean path here: vertex values converted to `S`
 /// once, planes set up in `S` and stepped with additions. A triangle whose stepped
 /// values could leave their ranges (a wrapping scalar's rounding, or a
-/// triangle reaching toward the guard band) takes [`rasterize_careful`].
+/// triangle reaching toward the guard band) takes `rasterize_careful`.
 #[inline(never)]
 pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     target: &mut StripTarget<'_, C, Z::Value>,

@@ -52,7 +52,7 @@
 //! - Texture coordinates are kept as in the file (Babylon's convention).
 //! - **Triangles are rewound**: Babylon's files wind front faces so that
 //!   `(b - a) × (c - a)` points into the surface (counter-clockwise as
-//!   seen from the front); [`Mesh`](crate::mesh::Mesh) expects it to point
+//!   seen from the front); [`Mesh`] expects it to point
 //!   out, so the loader swaps the last two indices of every triangle.
 //! - Materials (`diffuse`, `specular`, `specularPower`, `ambient`,
 //!   `emissive`, `alpha`, `backFaceCulling`, `diffuseTexture.name`), with

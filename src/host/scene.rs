@@ -145,7 +145,7 @@ pub enum EffectChoice {
     /// Flat everywhere.
     Flat,
     /// Per-pixel lighting with the material's specular highlights
-    /// ([`BlinnPhong`](crate::effect::BlinnPhong)) everywhere (needs `V >= 6`).
+    /// ([`BlinnPhong`]) everywhere (needs `V >= 6`).
     Phong,
 }
 

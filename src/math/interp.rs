@@ -32,10 +32,13 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     const WRAPS: bool;
     /// From `f32` (saturating; NaN gives zero).
     fn from_f32(v: f32) -> Self;
-    /// Like [`Interp::from_f32`], but truncated toward zero in fixed point:
-    /// a vertex value for plane setup, in one conversion instruction where
-    /// rounding takes a sequence (the difference, under 2^-16, stays far
-    /// below a color or depth step).
+    /// A vertex value for plane setup: like [`Interp::from_f32`], but
+    /// truncated toward zero in fixed point (one conversion instruction
+    /// where rounding takes a sequence; the difference, under 2^-16, stays
+    /// far below a color or depth step), and `f32` as it is (a NaN would
+    /// give NaN gradients, which [`Interp::gradients`] makes zero, and
+    /// pixels converted from NaN are zero: no test is worth its cost, a
+    /// library call per value without an FPU).
     fn from_f32_truncated(v: f32) -> Self;
     /// A triangle's shape prepared once for the gradients of all its
     /// planes ([`Interp::basis`]).
@@ -236,7 +239,7 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn from_f32_truncated(v: f32) -> Self {
-        Self::from_f32(v)
+        v
     }
     type Basis = FloatBasis;
     #[inline(always)]
@@ -264,7 +267,8 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn depth(z: f32) -> Self {
-        Self::from_f32((1.0 - z) * crate::raster::DEPTH_RANGE + 1.5)
+        // As it is, like `from_f32_truncated`.
+        (1.0 - z) * crate::raster::DEPTH_RANGE + 1.5
     }
     #[inline]
     fn to_f32(self) -> f32 {
