@@ -375,6 +375,15 @@ struct Sorted<'v, const V: usize> {
     y_bot: i32,
 }
 
+impl<const V: usize> Sorted<'_, V> {
+    /// The depth values at the vertices in `f32`, times `S`'s depth scale
+    /// (see [`Interp::depth`]): for the `f64` setup of far planes.
+    fn depths<S: Interp>(&self) -> (f32, f32, f32) {
+        let depth = |v: &ScreenVertex<V>| <f32 as Interp>::depth(v.z) * S::DEPTH_SCALE;
+        (depth(self.a), depth(self.b), depth(self.c))
+    }
+}
+
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
 /// `P` and depth mode `D`, stepping attributes in `S`.
 ///
@@ -511,7 +520,7 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
         // A triangle reaching toward the guard band gets its planes again
         // in f64 (see `Plane::far`).
         let values = VertexValues::<V>::new::<C, E, P, S>(t, effect);
-        z = Plane::far(shape, values.depths::<S>(t), values.z_range);
+        z = Plane::far(shape, t.depths::<S>(), values.z_range);
         if P::CORRECT {
             q = Plane::far(shape, values.q, values.q_range);
         }
@@ -616,13 +625,6 @@ struct VertexValues<const V: usize> {
 }
 
 impl<const V: usize> VertexValues<V> {
-    /// The depth values of a triangle's vertices in `f32` (see
-    /// [`Interp::depth`]).
-    fn depths<S: Interp>(&self, t: &Sorted<'_, V>) -> (f32, f32, f32) {
-        let depth = |v: &ScreenVertex<V>| <f32 as Interp>::depth(v.z) * S::DEPTH_SCALE;
-        (depth(t.a), depth(t.b), depth(t.c))
-    }
-
     #[inline(always)]
     fn new<C: Color, E: Effect, P: Perspective, S: Interp>(t: &Sorted<'_, V>, effect: &E) -> Self {
         let (a, b, c) = (t.a, t.b, t.c);
@@ -698,7 +700,7 @@ impl<S: Interp, const V: usize> Planes<S, V> {
         // point), not through f32.
         let (a, b, c) = (S::depth(t.a.z), S::depth(t.b.z), S::depth(t.c.z));
         let mut clear = true;
-        let z = Plane::new(shape, (a, b, c), values.z_range, || values.depths::<S>(t), &mut clear);
+        let z = Plane::new(shape, (a, b, c), values.z_range, || t.depths::<S>(), &mut clear);
         let q = if P::CORRECT {
             Plane::from_f32(shape, values.q, values.q_range, &mut clear)
         } else {

@@ -42,14 +42,10 @@ impl Fixed {
     }
 
     /// `v` times 2^16 truncated toward zero, saturating, NaN giving zero
-    /// (the raw bits of a gradient).
+    /// (a vertex value for plane setup).
     #[inline]
     pub fn truncate_f32(v: f32) -> Self {
-        if super::HARD_FLOAT {
-            Self((v * (1u32 << Self::FRAC_BITS) as f32) as i32)
-        } else {
-            Self(scaled_from_bits(v, Self::FRAC_BITS as i32, false))
-        }
+        Self(Self::scaled_truncated(v, Self::FRAC_BITS as i32))
     }
 
     /// `v * 2^k` truncated toward zero to an integer, saturating, NaN

@@ -544,6 +544,28 @@ impl Interp for Fixed {
 mod tests {
     use super::*;
 
+    /// A xorshift generator: the same numbers on every run.
+    fn xorshift(mut seed: u32) -> impl FnMut() -> u32 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        }
+    }
+
+    /// Offsets `[ox1, oy1, ox2, oy2]` of a random triangle, its `area2` and
+    /// `f` (1 to 9): from a unit to the guard band in size, slivers
+    /// included; `None` if it came out degenerate.
+    fn random_triangle(next: &mut impl FnMut() -> u32) -> Option<([i32; 4], i64, u32)> {
+        let f = 1 + next() % 9;
+        let reach = 1i64 << (next() % (30 - f));
+        let mut offset = || ((next() as i64 % (2 * reach + 1)) - reach) as i32;
+        let o = [offset(), offset(), offset(), offset()];
+        let area2 = o[0] as i64 * o[3] as i64 - o[1] as i64 * o[2] as i64;
+        (area2 != 0).then_some((o, area2, f))
+    }
+
     fn stepping<S: Interp>() {
         let mut v = S::from_f32(10.5);
         let d = S::from_f32(0.25);
@@ -634,13 +656,7 @@ mod tests {
     fn fixed_range_check_equals_evaluating_the_plane() {
         // The shift-free check against the plain one, on values that
         // straddle the bounds (floor of negative sums included).
-        let mut seed = 12345u32;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed
-        };
+        let mut next = xorshift(12345u32);
         for _ in 0..20_000 {
             let v0 = Fixed::from_bits((next() % 4000) as i32 - 2000);
             let (dx, dy) = (Fixed::from_bits((next() % 600) as i32 - 300), Fixed::from_bits((next() % 600) as i32 - 300));
@@ -661,23 +677,12 @@ mod tests {
         // plus what the coefficients' last places weigh (about 2^-28 of
         // the terms `d1 oy2` and `d2 oy1`, so of the gradient unless they
         // cancel; f32 setup is off by 2^-24 of them).
-        let mut seed = 0x2545_F491u32;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed
-        };
+        let mut next = xorshift(0x2545_F491u32);
         let mut checked = 0;
         for _ in 0..200_000 {
-            let f = 1 + next() % 9;
-            let reach = 1i64 << (next() % (30 - f));
-            let mut offset = || ((next() as i64 % (2 * reach + 1)) - reach) as i32;
-            let o = [offset(), offset(), offset(), offset()];
-            let area2 = o[0] as i64 * o[3] as i64 - o[1] as i64 * o[2] as i64;
-            if area2 == 0 {
+            let Some((o, area2, f)) = random_triangle(&mut next) else {
                 continue;
-            }
+            };
             // Below 2^30, so that differences fit (beyond, they saturate
             // and the range check rejects the plane).
             let scale = 1 + next() % 31;
@@ -724,24 +729,13 @@ mod tests {
         // size and shape, values anywhere in ranges as narrow as a color
         // channel's and as wide as depth's or texture coordinates', many
         // of them next to a bound.
-        let mut seed = 0x9E37_79B9u32;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed
-        };
+        let mut next = xorshift(0x9E37_79B9u32);
         let ranges = [(0, 256 << 16), (1 << 15, 65535 << 15), (-30_000 << 16, 30_000 << 16), (-66_191, 66_191)];
         let (mut cleared, mut exact_only) = (0, 0);
         for _ in 0..300_000 {
-            let f = 1 + next() % 9;
-            let reach = 1i64 << (next() % (30 - f));
-            let mut offset = || ((next() as i64 % (2 * reach + 1)) - reach) as i32;
-            let o = [offset(), offset(), offset(), offset()];
-            let area2 = o[0] as i64 * o[3] as i64 - o[1] as i64 * o[2] as i64;
-            if area2 == 0 {
+            let Some((o, area2, f)) = random_triangle(&mut next) else {
                 continue;
-            }
+            };
             let (lo, hi) = ranges[next() as usize % ranges.len()];
             let width = (hi as i64 - lo as i64) as u64;
             let mut value = || {
