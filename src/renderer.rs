@@ -31,7 +31,7 @@ use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenV
 use crate::scene::{Camera, Lighting, Lights};
 use crate::settings::{DepthFormat, DepthValue, FixedPoint, Settings};
 use crate::tri::TriVertex;
-use crate::vertex::{self, VertexStage};
+use crate::vertex::{self, FloatProjection, IntegerProjection, Projection, VertexStage};
 use core::marker::PhantomData;
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
@@ -438,8 +438,35 @@ where
             height: self.b.height as f32,
             subpixel_bits: S::SUBPIXEL_BITS,
         };
+        if <S::Interp as crate::math::Interp>::INTEGER_PROJECTION {
+            let (w, h) = (stage.width, stage.height);
+            if let Some(projection) = IntegerProjection::new(&stage.mvp, mesh.positions(), mesh.bounds(), w, h, S::SUBPIXEL_BITS) {
+                return self.queue_mesh(mesh, material, &stage, &projection, base);
+            }
+        }
+        self.queue_mesh(mesh, material, &stage, &FloatProjection, base)
+    }
+
+    /// Runs the vertex stage over `mesh` into the vertex buffer from
+    /// `base` on, then assembles and queues its triangles.
+    #[inline(always)]
+    fn queue_mesh<E, P, D, J>(
+        &mut self,
+        mesh: &Mesh<'_>,
+        material: &'m Material<E, P, D>,
+        stage: &VertexStage<'_, E>,
+        projection: &J,
+        base: usize,
+    ) -> Result<(), DrawError>
+    where
+        E: Effect,
+        P: Perspective,
+        D: DepthMode,
+        J: Projection,
+    {
+        let (model, lights) = (&stage.model, self.lights);
         for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
-            *slot = stage.vertex::<C, V>(mesh, i);
+            *slot = projection.vertex::<E, C, V>(stage, mesh, i);
         }
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
@@ -459,7 +486,7 @@ where
             };
             let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
                 let i = local[vi];
-                ClipVertex { pos: stage.clip_position(p(i)), attrs: stage.varyings::<C, V>(mesh, i), src: corners[vi] }
+                ClipVertex { pos: projection.clip_position(stage, mesh, i), attrs: stage.varyings::<C, V>(mesh, i), src: corners[vi] }
             });
             if let Err(e) = res {
                 self.rollback(base, snapshot);
@@ -566,6 +593,13 @@ where
         }
         self.stats.clipped += 1;
         let mut poly: Polygon<ClipVertex<V>> = (0..3).map(&clip_vertex).collect();
+        // A flagged corner has no stored window position to share: if
+        // clipping keeps it, it is projected again like a new vertex.
+        for (v, f) in poly.iter_mut().zip(fl) {
+            if f != 0 {
+                v.src = NO_SOURCE;
+            }
+        }
         clip::clip_near_far(&mut poly);
         if poly.len() < 3 {
             self.stats.off_screen += 1;

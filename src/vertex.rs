@@ -10,6 +10,10 @@ use crate::raster::{snap, ScreenVertex};
 use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::Rgb888;
 
+mod integer;
+
+pub use integer::IntegerProjection;
+
 /// Vertex outside the near plane (in front of it is inside).
 pub const BEHIND_NEAR: i32 = 1;
 /// Vertex beyond the far plane.
@@ -157,4 +161,40 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
         flags |= OUTSIDE_GUARD;
     }
     ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
+}
+
+/// How a draw call turns mesh vertices into stored vertices: in `f32`
+/// ([`FloatProjection`]) or in integers ([`IntegerProjection`]). The
+/// triangle loop is generic over it.
+pub trait Projection {
+    /// The stored vertex of mesh vertex `i`.
+    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V>;
+    /// Clip-space position of mesh vertex `i`, as the clipper sees it: the
+    /// one its stored vertex was flagged by.
+    fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4;
+}
+
+/// The vertex stage in `f32`.
+pub struct FloatProjection;
+
+impl Projection for FloatProjection {
+    #[inline(always)]
+    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
+        stage.vertex::<C, V>(mesh, i)
+    }
+    #[inline(always)]
+    fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        stage.clip_position(mesh.position(i))
+    }
+}
+
+impl Projection for IntegerProjection<'_> {
+    #[inline(always)]
+    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
+        self.project(i, stage.varyings::<C, V>(mesh, i))
+    }
+    #[inline(always)]
+    fn clip_position<E: Effect>(&self, _: &VertexStage<'_, E>, _: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_position(i)
+    }
 }

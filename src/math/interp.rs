@@ -9,7 +9,7 @@
 //! derived from those three numbers with [`Interp::plane_at`] and
 //! [`Interp::plane_within`], so stepping and checking agree exactly.
 
-use super::{mul_wide, Fixed};
+use super::{mul_wide, reciprocal_q61, Fixed};
 
 /// A number type that plane equations are stepped in.
 ///
@@ -30,6 +30,11 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// be checked against their ranges ([`Interp::plane_within`]). `f32`
     /// saturates when converted instead.
     const WRAPS: bool;
+    /// Whether the vertex stage transforms and projects positions in
+    /// integers ([`IntegerProjection`](crate::vertex::IntegerProjection))
+    /// rather than in `f32`: where there is no FPU, that is the bulk of a
+    /// small-triangle frame.
+    const INTEGER_PROJECTION: bool;
     /// From `f32` (saturating; NaN gives zero).
     fn from_f32(v: f32) -> Self;
     /// A vertex value for plane setup: like [`Interp::from_f32`], but
@@ -166,15 +171,10 @@ impl FixedBasis {
         if area == 0 {
             return STEEP;
         }
-        // 1 / area = r * 2^(n - 93), r in (2^29, 2^30): `m` is the area's
-        // top 32 bits, `r0` estimates 2^61 / m from a 32-bit division of
-        // its top 16 (relative error below 2^-14), and one Newton step
-        // squares that error.
+        // 1 / area = r * 2^(n - 93), r in (2^29, 2^30), from the area's
+        // top 32 bits `m`.
         let n = area.leading_zeros();
-        let m = ((area << n) >> 32) as u32;
-        let r0 = (u32::MAX / (m >> 16)) << 13;
-        let e = (1i64 << 61) - (m as u64 * r0 as u64) as i64;
-        let r = (r0 as i64 + (mul_wide(r0 as i32, (e >> 16) as i32) >> 45)).min((1 << 30) - 1) as i32;
+        let r = reciprocal_q61(((area << n) >> 32) as u32);
         let r2 = if area2 < 0 { -(r << 1) } else { r << 1 };
         // Offsets below 2^t, t <= 30: each coefficient o r 2^-t is the high
         // word of (o 2^(31 - t)) (2 r), below 2^30 (one multiply-high).
@@ -229,6 +229,7 @@ impl Interp for f32 {
     const DEPTH_SCALE: f32 = 1.0;
     const Q_SCALE: f32 = 1.0;
     const WRAPS: bool = false;
+    const INTEGER_PROJECTION: bool = false;
     #[inline]
     fn from_f32(v: f32) -> Self {
         if v.is_nan() {
@@ -385,6 +386,7 @@ impl Interp for Fixed {
     const DEPTH_SCALE: f32 = 0.5;
     const Q_SCALE: f32 = 8192.0;
     const WRAPS: bool = true;
+    const INTEGER_PROJECTION: bool = true;
     #[inline]
     fn from_f32(v: f32) -> Self {
         Fixed::from_f32(v)
@@ -543,16 +545,7 @@ impl Interp for Fixed {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A xorshift generator: the same numbers on every run.
-    fn xorshift(mut seed: u32) -> impl FnMut() -> u32 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed
-        }
-    }
+    use crate::math::xorshift;
 
     /// Offsets `[ox1, oy1, ox2, oy2]` of a random triangle, its `area2` and
     /// `f` (1 to 9): from a unit to the guard band in size, slivers

@@ -43,6 +43,18 @@ pub(crate) fn mul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
+/// `2^61 / m` for a normalized `m` (in `[2^31, 2^32)`), within 2^-28 of
+/// it relatively and in `[2^29, 2^30)`, without a 64-bit division (a long
+/// library routine on every Cortex-M): a 32-bit division of `m`'s top 16
+/// bits estimates it (relative error below 2^-14) and one Newton step
+/// squares that error.
+#[inline(always)]
+pub(crate) fn reciprocal_q61(m: u32) -> i32 {
+    let r0 = (u32::MAX / (m >> 16)) << 13;
+    let e = (1i64 << 61) - (m as u64 * r0 as u64) as i64;
+    (r0 as i64 + (mul_wide(r0 as i32, (e >> 16) as i32) >> 45)).min((1 << 30) - 1) as i32
+}
+
 /// [`mul_wide`] from 16×16-bit products, for cores without a long multiply.
 #[inline(always)]
 fn mul_wide_by_halves(a: i32, b: i32) -> i64 {
@@ -56,9 +68,32 @@ fn mul_wide_by_halves(a: i32, b: i32) -> i64 {
     (high << 32) + (middle << 16) + low
 }
 
+/// A xorshift generator for tests: the same numbers on every run.
+#[cfg(test)]
+pub(crate) fn xorshift(mut seed: u32) -> impl FnMut() -> u32 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        seed
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn normalized_reciprocals_are_within_2_to_the_minus_28() {
+        let mut next = xorshift(0x2545_F491);
+        let ms = (0..200_000).map(|_| next() | 1 << 31);
+        for m in ms.chain([1 << 31, (1 << 31) + 1, u32::MAX, 0xFFFF_0000, 0x8000_FFFF]) {
+            let r = reciprocal_q61(m) as f64;
+            let exact = 2f64.powi(61) / m as f64;
+            assert!(((r - exact) / exact).abs() < 2f64.powi(-28), "2^61 / {m}: {r} against {exact}");
+            assert!(r >= 2f64.powi(29) && r < 2f64.powi(30));
+        }
+    }
 
     #[test]
     fn products_by_halves_are_exact() {
@@ -68,11 +103,9 @@ mod tests {
                 assert_eq!(mul_wide_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
             }
         }
-        let mut x = 0x9E37_79B9u32;
+        let mut next = xorshift(0x9E37_79B9);
         for _ in 0..100_000 {
-            x ^= x << 13;
-            x ^= x >> 17;
-            x ^= x << 5;
+            let x = next();
             let (a, b) = (x as i32, x.rotate_left(11) as i32 >> (x % 31));
             assert_eq!(mul_wide_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
         }
