@@ -593,13 +593,6 @@ where
         }
         self.stats.clipped += 1;
         let mut poly: Polygon<ClipVertex<V>> = (0..3).map(&clip_vertex).collect();
-        // A flagged corner has no stored window position to share: if
-        // clipping keeps it, it is projected again like a new vertex.
-        for (v, f) in poly.iter_mut().zip(fl) {
-            if f != 0 {
-                v.src = NO_SOURCE;
-            }
-        }
         clip::clip_near_far(&mut poly);
         if poly.len() < 3 {
             self.stats.off_screen += 1;
@@ -636,7 +629,11 @@ where
         }
         let mut idx: Vec<u16, { clip::MAX_CLIPPED }> = Vec::new();
         for v in &poly {
-            if v.src != NO_SOURCE {
+            // A corner kept from the vertex buffer shares its stored
+            // position, unless it has none (it was flagged): then it is
+            // snapped here like a new vertex.
+            let stored = self.b.vertices.get(v.src as usize).is_some_and(|s| vertex::flags(s) == 0);
+            if v.src != NO_SOURCE && stored {
                 let _ = idx.push(v.src);
                 continue;
             }

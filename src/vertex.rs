@@ -1,6 +1,8 @@
 //! The vertex stage: model, view and projection to clip space, normals
 //! through the normal matrix, per-vertex effect work (lighting), and the
-//! projection of visible vertices to snapped window coordinates.
+//! projection of visible vertices to snapped window coordinates. Positions
+//! go through it in `f32` ([`FloatProjection`]) or, for fixed-point
+//! settings, in integers ([`IntegerProjection`], module `integer`).
 
 use crate::clip::ClipVertex;
 use crate::effect::{vertex_varyings, Color, Effect, VertexInput};

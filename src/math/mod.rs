@@ -1,8 +1,10 @@
 //! Vectors, matrices and scalar types.
 //!
-//! Geometry (the vertex stage) works in `f32`. Attribute interpolation in the
-//! rasterizer is generic over [`Interp`], implemented by `f32` and by the
-//! fixed-point [`Fixed`].
+//! Geometry (the vertex stage) works in `f32`, but for the positions of
+//! fixed-point renderers, which it transforms and projects in integers
+//! ([`IntegerProjection`](crate::vertex::IntegerProjection)). Attribute
+//! interpolation in the rasterizer is generic over [`Interp`], implemented
+//! by `f32` and by the fixed-point [`Fixed`].
 //!
 //! Matrices use the column-vector convention: a point is transformed as
 //! `M * p`, and `A * B` applies `B` first. Storage is row-major
