@@ -57,6 +57,21 @@ pub struct VertexInput {
     pub color: Rgb888,
     /// Texture coordinate (zero if the mesh has none).
     pub uv: Vec2,
+    /// The color lit by the lights, per channel in `[0, 255]`:
+    /// `clamp(ambient + Σ light·clamp(N·L, 0, 1), 0, 1) · color`, computed
+    /// by the vertex stage for effects with [`Effect::LIT_COLOR`] (in
+    /// integers for fixed-point settings where it can), zero for others.
+    pub lit: [f32; 3],
+}
+
+impl VertexInput {
+    /// The input of a vertex at `position` with unit `normal`, `color`
+    /// and `uv`, lit by `lights` in `f32` if `E` reads [`VertexInput::lit`].
+    #[inline(always)]
+    pub fn new<E: Effect>(position: Vec3, normal: Vec3, color: Rgb888, uv: Vec2, lights: &Lighting) -> Self {
+        let lit = if E::LIT_COLOR { lit(lights.diffuse(position, normal), color) } else { [0.0; 3] };
+        Self { position, normal, color, uv, lit }
+    }
 }
 
 /// Per-triangle input to an effect (world space).
@@ -79,6 +94,9 @@ pub trait Effect: Copy {
     const LIT_VERTICES: bool;
     /// Whether [`Effect::face`] is used, so other effects skip the face normal.
     const USES_FACE: bool;
+    /// Whether [`Effect::vertex`] reads [`VertexInput::lit`], which the
+    /// vertex stage then computes (false: it is left zero).
+    const LIT_COLOR: bool = false;
     /// Name for reports.
     const NAME: &'static str;
 
@@ -134,7 +152,7 @@ pub(crate) fn vertex_varyings<C: Color, E: Effect, const V: usize>(effect: &E, i
 
 /// Light times color, per channel, clamped to [0, 255].
 #[inline]
-fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
+pub(crate) fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
     let ch = |l: f32, v: u8| crate::scene::clamp01(l) * v as f32;
     [ch(light.x, c.r()), ch(light.y, c.g()), ch(light.z, c.b())]
 }
@@ -199,10 +217,11 @@ impl Effect for Gouraud {
     const VARYINGS: usize = 3;
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
+    const LIT_COLOR: bool = true;
     const NAME: &'static str = "gouraud";
     #[inline(always)]
-    fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
-        rgb_varyings::<C>(lit(lights.diffuse(v.position, v.normal), v.color))
+    fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+        rgb_varyings::<C>(v.lit)
     }
     fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
@@ -340,6 +359,7 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
     const VARYINGS: usize = 5;
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
+    const LIT_COLOR: bool = true;
     const NAME: &'static str = "textured";
 
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
@@ -358,8 +378,8 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
     }
 
     #[inline(always)]
-    fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
-        let l = lit(lights.diffuse(v.position, v.normal), v.color);
+    fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+        let l = v.lit;
         // Half a level up, like the color effects' channels: truncation
         // then rounds, and the values keep half a level of margin inside
         // their range (values on its bounds would send every triangle

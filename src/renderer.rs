@@ -31,7 +31,7 @@ use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenV
 use crate::scene::{Camera, Lighting, Lights};
 use crate::settings::{DepthFormat, DepthValue, FixedPoint, Settings};
 use crate::tri::TriVertex;
-use crate::vertex::{self, FloatProjection, IntegerProjection, Projection, VertexStage};
+use crate::vertex::{self, FloatVertices, IntegerLighting, IntegerProjection, IntegerVertices, VertexArithmetic, VertexStage};
 use core::marker::PhantomData;
 use embedded_graphics::draw_target::DrawTarget;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
@@ -441,10 +441,13 @@ where
         if <S::Interp as crate::math::Interp>::INTEGER_PROJECTION {
             let (w, h) = (stage.width, stage.height);
             if let Some(projection) = IntegerProjection::new(&stage.mvp, mesh.positions(), mesh.bounds(), w, h, S::SUBPIXEL_BITS) {
-                return self.queue_mesh(mesh, material, &stage, &projection, base);
+                let lit_in_model_space = E::LIT_COLOR && stage.model_space;
+                let lighting =
+                    lit_in_model_space.then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals())).flatten();
+                return self.queue_mesh(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
             }
         }
-        self.queue_mesh(mesh, material, &stage, &FloatProjection, base)
+        self.queue_mesh(mesh, material, &stage, &FloatVertices, base)
     }
 
     /// Runs the vertex stage over `mesh` into the vertex buffer from
@@ -462,7 +465,7 @@ where
         E: Effect,
         P: Perspective,
         D: DepthMode,
-        J: Projection,
+        J: VertexArithmetic,
     {
         let (model, lights) = (&stage.model, self.lights);
         for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
@@ -486,7 +489,11 @@ where
             };
             let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
                 let i = local[vi];
-                ClipVertex { pos: projection.clip_position(stage, mesh, i), attrs: stage.varyings::<C, V>(mesh, i), src: corners[vi] }
+                ClipVertex {
+                    pos: projection.clip_position(stage, mesh, i),
+                    attrs: projection.varyings::<E, C, V>(stage, mesh, i),
+                    src: corners[vi],
+                }
             });
             if let Err(e) = res {
                 self.rollback(base, snapshot);
@@ -517,7 +524,7 @@ where
         let lights = Lighting::UNLIT;
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {
-                let input = VertexInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: v.color, uv: Vec2::new(0.0, 0.0) };
+                let input = VertexInput::new::<E>(Vec3::ZERO, Vec3::ZERO, v.color, Vec2::new(0.0, 0.0), &lights);
                 vertex_varyings::<C, E, V>(&material.effect, &input, &lights)
             };
             let face = if E::USES_FACE {

@@ -96,9 +96,9 @@ impl<I: Interp, const B: u32, Z: DepthFormat> Settings for Precision<I, B, Z> {
 
 /// Fixed-point interpolation, 6 sub-pixel bits: for FPU-less parts
 /// (Cortex-M0+), where its triangle setup runs in integers only (see
-/// [`FixedBasis`](crate::math::FixedBasis)), and so do the transform and
-/// projection of vertex positions (see
-/// [`IntegerProjection`](crate::vertex::IntegerProjection)). Six bits, because the accuracy study (`docs/accuracy.md`)
+/// [`FixedBasis`](crate::math::FixedBasis)), and so does the vertex stage
+/// but for uncommon lights (see
+/// [`IntegerVertices`](crate::vertex::IntegerVertices)). Six bits, because the accuracy study (`docs/accuracy.md`)
 /// measured them clearly closer to the exact image than four (edges follow
 /// the reference), at no measurable cost in instructions; the guard band is
 /// then 32,768 pixels.

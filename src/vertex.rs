@@ -1,11 +1,13 @@
 //! The vertex stage: model, view and projection to clip space, normals
 //! through the normal matrix, per-vertex effect work (lighting), and the
-//! projection of visible vertices to snapped window coordinates. Positions
-//! go through it in `f32` ([`FloatProjection`]) or, for fixed-point
-//! settings, in integers ([`IntegerProjection`], module `integer`).
+//! projection of visible vertices to snapped window coordinates. A draw
+//! call goes through it in `f32` ([`FloatVertices`]) or, for fixed-point
+//! settings, in integers ([`IntegerVertices`]: positions by
+//! [`IntegerProjection`], the lit color by [`IntegerLighting`] where it
+//! covers the lights).
 
 use crate::clip::ClipVertex;
-use crate::effect::{vertex_varyings, Color, Effect, VertexInput};
+use crate::effect::{lit, vertex_varyings, Color, Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::raster::{snap, ScreenVertex};
@@ -13,8 +15,10 @@ use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::Rgb888;
 
 mod integer;
+mod integer_lighting;
 
 pub use integer::IntegerProjection;
+pub use integer_lighting::IntegerLighting;
 
 /// Vertex outside the near plane (in front of it is inside).
 pub const BEHIND_NEAR: i32 = 1;
@@ -75,16 +79,23 @@ impl<E: Effect> VertexStage<'_, E> {
         self.mvp.transform_point(p)
     }
 
-    /// Varyings of mesh vertex `i`.
+    /// Varyings of mesh vertex `i`, lit in `f32`.
     #[inline(always)]
     pub fn varyings<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
-        self.varyings_at::<C, V>(mesh, i, mesh.position(i))
+        self.varyings_at::<C, V>(mesh, i, mesh.position(i), |position, normal, color| lit(self.lights.diffuse(position, normal), color))
     }
 
-    /// [`VertexStage::varyings`] of vertex `i` at model-space position
-    /// `p` (read once by the caller).
+    /// Varyings of mesh vertex `i` at model-space position `p` (read once
+    /// by the caller), with its lit color from `lit(position, normal,
+    /// color)` if the effect reads it.
     #[inline(always)]
-    fn varyings_at<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, p: Vec3) -> [f32; V] {
+    fn varyings_at<C: Color, const V: usize>(
+        &self,
+        mesh: &Mesh<'_>,
+        i: usize,
+        p: Vec3,
+        lit: impl FnOnce(Vec3, Vec3, Rgb888) -> [f32; 3],
+    ) -> [f32; V] {
         if E::VARYINGS == 0 {
             return [0.0; V];
         }
@@ -100,11 +111,13 @@ impl<E: Effect> VertexStage<'_, E> {
             let n = self.normal_matrix.transform(mesh.normal(i)).normalize_or_zero();
             (self.model.transform_point3(p), n)
         };
+        let color = mesh.colors().map_or(self.color, |c| c[i]);
         let input = VertexInput {
             position,
             normal,
-            color: mesh.colors().map_or(self.color, |c| c[i]),
+            color,
             uv: mesh.uvs().map_or(Vec2::new(0.0, 0.0), |u| u[i]),
+            lit: if E::LIT_COLOR { lit(position, normal, color) } else { [0.0; 3] },
         };
         vertex_varyings::<C, E, V>(self.effect, &input, self.lights)
     }
@@ -117,7 +130,7 @@ impl<E: Effect> VertexStage<'_, E> {
     pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
         let p = mesh.position(i);
         let clip = self.clip_position(p);
-        let attrs = self.varyings_at::<C, V>(mesh, i, p);
+        let attrs = self.varyings_at::<C, V>(mesh, i, p, |position, normal, color| lit(self.lights.diffuse(position, normal), color));
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }
 }
@@ -165,10 +178,12 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
     ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
 }
 
-/// How a draw call turns mesh vertices into stored vertices: in `f32`
-/// ([`FloatProjection`]) or in integers ([`IntegerProjection`]). The
-/// triangle loop is generic over it.
-pub trait Projection {
+/// The arithmetic a draw call's vertices go through: `f32`
+/// ([`FloatVertices`]) or, for fixed-point settings, integers
+/// ([`IntegerVertices`]). The triangle loop is generic over it.
+pub trait VertexArithmetic {
+    /// The varyings of mesh vertex `i`.
+    fn varyings<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> [f32; V];
     /// The stored vertex of mesh vertex `i`.
     fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V>;
     /// Clip-space position of mesh vertex `i`, as the clipper sees it: the
@@ -177,9 +192,13 @@ pub trait Projection {
 }
 
 /// The vertex stage in `f32`.
-pub struct FloatProjection;
+pub struct FloatVertices;
 
-impl Projection for FloatProjection {
+impl VertexArithmetic for FloatVertices {
+    #[inline(always)]
+    fn varyings<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
+        stage.varyings::<C, V>(mesh, i)
+    }
     #[inline(always)]
     fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
         stage.vertex::<C, V>(mesh, i)
@@ -190,13 +209,29 @@ impl Projection for FloatProjection {
     }
 }
 
-impl Projection for IntegerProjection<'_> {
+/// The vertex stage in integers: positions always, the lit color where
+/// [`IntegerLighting`] covers the draw call's lights (else in `f32`).
+pub struct IntegerVertices<'a> {
+    /// The draw call's transform and viewport.
+    pub projection: IntegerProjection<'a>,
+    /// Its lights, if integers cover them.
+    pub lighting: Option<IntegerLighting<'a>>,
+}
+
+impl VertexArithmetic for IntegerVertices<'_> {
+    #[inline(always)]
+    fn varyings<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
+        match &self.lighting {
+            Some(l) => stage.varyings_at::<C, V>(mesh, i, mesh.position(i), |_, _, color| l.lit(i, color)),
+            None => stage.varyings::<C, V>(mesh, i),
+        }
+    }
     #[inline(always)]
     fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        self.project(i, stage.varyings::<C, V>(mesh, i))
+        self.projection.project(i, self.varyings::<E, C, V>(stage, mesh, i))
     }
     #[inline(always)]
     fn clip_position<E: Effect>(&self, _: &VertexStage<'_, E>, _: &Mesh<'_>, i: usize) -> Vec4 {
-        self.clip_position(i)
+        self.projection.clip_position(i)
     }
 }

@@ -30,10 +30,10 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// be checked against their ranges ([`Interp::plane_within`]). `f32`
     /// saturates when converted instead.
     const WRAPS: bool;
-    /// Whether the vertex stage transforms and projects positions in
-    /// integers ([`IntegerProjection`](crate::vertex::IntegerProjection))
-    /// rather than in `f32`: where there is no FPU, that is the bulk of a
-    /// small-triangle frame.
+    /// Whether the vertex stage works in integers
+    /// ([`IntegerVertices`](crate::vertex::IntegerVertices)) rather than in
+    /// `f32`: where there is no FPU, that is the bulk of a small-triangle
+    /// frame.
     const INTEGER_PROJECTION: bool;
     /// From `f32` (saturating; NaN gives zero).
     fn from_f32(v: f32) -> Self;

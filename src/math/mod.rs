@@ -1,8 +1,7 @@
 //! Vectors, matrices and scalar types.
 //!
-//! Geometry (the vertex stage) works in `f32`, but for the positions of
-//! fixed-point renderers, which it transforms and projects in integers
-//! ([`IntegerProjection`](crate::vertex::IntegerProjection)). Attribute
+//! Geometry (the vertex stage) works in `f32`, or mostly in integers for
+//! fixed-point renderers ([`IntegerVertices`](crate::vertex::IntegerVertices)). Attribute
 //! interpolation in the rasterizer is generic over [`Interp`], implemented
 //! by `f32` and by the fixed-point [`Fixed`].
 //!

@@ -89,7 +89,7 @@ fn exponent(v: f32) -> i32 {
 /// `v 2^e` as `f32`, truncated toward zero (flushed to zero below the
 /// normal range, saturated above it), from the bits: no float operation.
 #[inline(always)]
-fn f32_from_parts(v: u32, e: i32) -> f32 {
+pub(super) fn f32_from_parts(v: u32, e: i32) -> f32 {
     if v == 0 {
         return 0.0;
     }
@@ -105,10 +105,10 @@ fn f32_from_parts(v: u32, e: i32) -> f32 {
     }
 }
 
-/// `round(v 2^k)` of a finite `f32` from its bits, clamped to
-/// `±INPUT_MAX`, or `None` if `v` is not finite.
+/// `round(v 2^k)` of a finite `f32` from its bits, clamped to `±max`
+/// (at most `2^30`), or `None` if `v` is not finite.
 #[inline(always)]
-fn scaled_rounded(v: f32, k: i32) -> Option<i32> {
+pub(super) fn scaled_rounded(v: f32, k: i32, max: i32) -> Option<i32> {
     let bits = v.to_bits();
     let field = ((bits >> 23) & 0xFF) as i32;
     if field == 0xFF {
@@ -124,14 +124,14 @@ fn scaled_rounded(v: f32, k: i32) -> Option<i32> {
     let magnitude = if shift <= 0 {
         // m < 2^24: up to six places left it stays below 2^30.
         if shift < -6 {
-            INPUT_MAX
+            max
         } else {
-            (m << -shift).min(INPUT_MAX as u32) as i32
+            (m << -shift).min(max as u32) as i32
         }
     } else if shift > 24 {
         0
     } else {
-        (((m >> (shift - 1)) + 1) >> 1).min(INPUT_MAX as u32) as i32
+        (((m >> (shift - 1)) + 1) >> 1).min(max as u32) as i32
     };
     Some(if bits >> 31 != 0 { -magnitude } else { magnitude })
 }
@@ -216,7 +216,7 @@ impl<'a> IntegerProjection<'a> {
         match self.input {
             Input::F32(p, k) => {
                 let v = p.get(i)?;
-                Some([scaled_rounded(v.x, k)?, scaled_rounded(v.y, k)?, scaled_rounded(v.z, k)?])
+                Some([scaled_rounded(v.x, k, INPUT_MAX)?, scaled_rounded(v.y, k, INPUT_MAX)?, scaled_rounded(v.z, k, INPUT_MAX)?])
             }
             Input::I16(s) => s.get(i).map(|q| q.map(|v| (v as i32) << 15)),
         }
@@ -454,9 +454,10 @@ mod tests {
         for (v, k, want) in
             [(1.5f32, 1, 3), (-1.25, 2, -5), (0.5, 0, 1), (-0.5, 0, -1), (0.49, 0, 0), (3.0, 40, INPUT_MAX), (1e-30, 10, 0), (-0.0, 5, 0)]
         {
-            assert_eq!(scaled_rounded(v, k), Some(want), "{v} * 2^{k}");
+            assert_eq!(scaled_rounded(v, k, INPUT_MAX), Some(want), "{v} * 2^{k}");
         }
-        assert_eq!(scaled_rounded(f32::NAN, 0), None);
+        assert_eq!(scaled_rounded(3.0, 40, 7), Some(7));
+        assert_eq!(scaled_rounded(f32::NAN, 0, INPUT_MAX), None);
         for (v, e, want) in [(1u32, 0, 1.0f32), (3, -1, 1.5), (1 << 30, -30, 1.0), (0, 5, 0.0), (1, -200, 0.0), (1, 200, f32::MAX)] {
             assert_eq!(f32_from_parts(v, e), want, "{v} * 2^{e}");
         }

@@ -1,0 +1,136 @@
+//! Vertex lighting in integers, for fixed-point settings: the lit color
+//! ([`VertexInput::lit`](crate::effect::VertexInput)) of Gouraud and
+//! textured effects from the ambient and directional lights, in 15-bit
+//! fractions. Without an FPU the `f32` version (a dot product, clamps,
+//! three products by the color) is some twenty library calls a vertex.
+//!
+//! It covers the common case, a draw call lit in model space (a
+//! similarity model matrix) by ambient and directional light of at most 2
+//! per channel, on a mesh of unit normals; any other (a point light, whose
+//! direction needs a normalization per vertex) is lit in `f32`:
+//! [`IntegerLighting::new`] returns `None`.
+
+use super::integer::scaled_rounded;
+use crate::mesh::Vectors;
+use crate::scene::Lighting;
+use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+
+/// One in 15-bit fractions.
+const ONE: i32 = 1 << 15;
+
+/// The lights of one draw call in 15-bit fractions.
+#[derive(Clone, Copy, Debug)]
+pub struct IntegerLighting<'a> {
+    normals: Vectors<'a>,
+    ambient: [i32; 3],
+    /// Unit direction toward the light, and its color (zero if none).
+    sun: ([i32; 3], [i32; 3]),
+}
+
+/// `v` in 15-bit fractions (rounded), if it is in `[0, 2)`.
+fn fraction(v: f32) -> Option<i32> {
+    (0.0..2.0).contains(&v).then(|| ((v * ONE as f32 + 0.5) as i32).min(2 * ONE - 1))
+}
+
+impl<'a> IntegerLighting<'a> {
+    /// The integer form of `lights` (in model space) for a mesh with
+    /// `normals` (all of unit length or zero if `unit_normals`), or `None`
+    /// where it does not apply.
+    pub fn new(lights: &Lighting, normals: Vectors<'a>, unit_normals: bool) -> Option<Self> {
+        if lights.point.is_some() || !unit_normals {
+            return None;
+        }
+        let color = |c: crate::math::Vec3| Some([fraction(c.x)?, fraction(c.y)?, fraction(c.z)?]);
+        let ambient = color(lights.ambient)?;
+        let sun = match lights.sun {
+            // A unit vector: each component in [-1, 1], rounded.
+            Some((d, c)) => ([d.x, d.y, d.z].map(|v| scaled_rounded(v, 15, ONE).unwrap_or(0)), color(c)?),
+            None => ([0; 3], [0; 3]),
+        };
+        Some(Self { normals, ambient, sun })
+    }
+
+    /// The normal of vertex `i` in 15-bit fractions.
+    #[inline(always)]
+    fn normal(&self, i: usize) -> [i32; 3] {
+        match self.normals {
+            // Unit normals (checked when the mesh was built): finite, and
+            // each component within [-1, 1] but for rounding.
+            Vectors::F32(n) => n.get(i).map_or([0; 3], |n| [n.x, n.y, n.z].map(|v| scaled_rounded(v, 15, ONE).unwrap_or(0))),
+            // Steps of 1/32767: 15-bit fractions but for 2^-15 of scale.
+            Vectors::I16 { steps, .. } => steps.get(i).map_or([0; 3], |s| s.map(i32::from)),
+        }
+    }
+
+    /// The lit color of vertex `i` of color `color`, per channel in
+    /// `[0, 255]`, exact in `f32` (a multiple of 2^-15 below 2^8).
+    #[inline(always)]
+    pub fn lit(&self, i: usize, color: Rgb888) -> [f32; 3] {
+        let (direction, sun) = self.sun;
+        let n = self.normal(i);
+        // Each product at most 2^30, and so is the sum (both vectors unit).
+        let dot = (n[0] * direction[0]).wrapping_add(n[1] * direction[1]).wrapping_add(n[2] * direction[2]);
+        let facing = (dot.clamp(0, 1 << 30) + (1 << 14)) >> 15;
+        let channel = |k: usize, c: u8| {
+            // sun < 2^16 and facing <= 2^15: the product fits.
+            let light = (self.ambient[k] + ((sun[k] * facing + (1 << 14)) >> 15)).min(ONE);
+            super::integer::f32_from_parts((light * c as i32) as u32, -15)
+        };
+        [channel(0, color.r()), channel(1, color.g()), channel(2, color.b())]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::effect::lit;
+    use crate::math::{xorshift, Vec3};
+    use crate::scene::{DirectionalLight, Lights};
+
+    #[test]
+    fn integer_lighting_matches_f32_within_three_hundredths_of_a_level() {
+        let mut next = xorshift(0xC0FF_EE11);
+        let mut u = move |lo: f32, hi: f32| lo + (hi - lo) * (next() as f32 / u32::MAX as f32);
+        let mut worst = 0.0f32;
+        for case in 0..2000 {
+            let direction = Vec3::new(u(-1.0, 1.0), u(-1.0, 1.0), u(-1.0, 1.0));
+            let lights = Lights {
+                ambient: Vec3::new(u(0.0, 0.5), u(0.0, 0.5), u(0.0, 0.5)),
+                point: None,
+                directional: (case % 10 != 0)
+                    .then(|| DirectionalLight { direction, color: Vec3::new(u(0.0, 1.9), u(0.0, 1.9), u(0.0, 1.9)) }),
+            };
+            let lighting = Lighting::new(&lights, Vec3::ZERO);
+            let normals: std::vec::Vec<Vec3> = (0..16)
+                .map(|k| if k == 0 { Vec3::ZERO } else { Vec3::new(u(-1.0, 1.0), u(-1.0, 1.0), u(-1.0, 1.0)).normalize_or_zero() })
+                .collect();
+            let integer = IntegerLighting::new(&lighting, Vectors::F32(&normals), true).expect("ambient and directional light");
+            for (i, n) in normals.iter().enumerate() {
+                let color = Rgb888::new((u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8);
+                let want = lit(lighting.diffuse(Vec3::ZERO, *n), color);
+                for (g, w) in integer.lit(i, color).iter().zip(want) {
+                    worst = worst.max((g - w).abs());
+                }
+            }
+        }
+        // Rounding to 2^-15 of the lights, normal, N·L and their product:
+        // some 2^-13 of the light, 0.03 of a level.
+        assert!(worst < 0.03, "worst difference {worst} of a level");
+        assert!(worst > 0.0);
+    }
+
+    #[test]
+    fn lights_it_does_not_cover_are_declined() {
+        let lit_by = |lights: Lights| Lighting::new(&lights, Vec3::ZERO);
+        let n = [Vec3::new(0.0, 0.0, 1.0)];
+        let mut lights = Lights::default();
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true).is_some());
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), false).is_none());
+        lights.ambient = Vec3::new(2.5, 0.0, 0.0);
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true).is_none());
+        lights.ambient = Vec3::new(f32::NAN, 0.0, 0.0);
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true).is_none());
+        let point = crate::scene::PointLight { position: Vec3::ZERO, color: Vec3::ONE };
+        assert!(IntegerLighting::new(&lit_by(Lights { point: Some(point), ..Lights::default() }), Vectors::F32(&n), true).is_none());
+    }
+}
