@@ -69,7 +69,7 @@ impl VertexInput {
     /// and `uv`, lit by `lights` in `f32` if `E` reads [`VertexInput::lit`].
     #[inline(always)]
     pub fn new<E: Effect>(position: Vec3, normal: Vec3, color: Rgb888, uv: Vec2, lights: &Lighting) -> Self {
-        let lit = if E::LIT_COLOR { lit(lights.diffuse(position, normal), color) } else { [0.0; 3] };
+        let lit = if E::LIT_COLOR { lit_by(lights, position, normal, color) } else { [0.0; 3] };
         Self { position, normal, color, uv, lit }
     }
 }
@@ -150,9 +150,16 @@ pub(crate) fn vertex_varyings<C: Color, E: Effect, const V: usize>(effect: &E, i
     out
 }
 
+/// `color` lit by `lights` at `position` with unit `normal`, in `f32`:
+/// [`VertexInput::lit`].
+#[inline(always)]
+pub(crate) fn lit_by(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
+    lit(lights.diffuse(position, normal), color)
+}
+
 /// Light times color, per channel, clamped to [0, 255].
 #[inline]
-pub(crate) fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
+fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
     let ch = |l: f32, v: u8| crate::scene::clamp01(l) * v as f32;
     [ch(light.x, c.r()), ch(light.y, c.g()), ch(light.z, c.b())]
 }
@@ -199,7 +206,7 @@ impl Effect for Flat {
     // a flat frame (scripts/effects-bench.sh).
     #[inline(always)]
     fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888 {
-        to_rgb888(lit(lights.diffuse(f.position, f.normal), f.color))
+        to_rgb888(lit_by(lights, f.position, f.normal, f.color))
     }
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, face: C, _: &[S; MAX_VARYINGS], _: C) -> C {

@@ -438,7 +438,7 @@ where
             height: self.b.height as f32,
             subpixel_bits: S::SUBPIXEL_BITS,
         };
-        if <S::Interp as crate::math::Interp>::INTEGER_PROJECTION {
+        if <S::Interp as crate::math::Interp>::INTEGER_VERTICES {
             let (w, h) = (stage.width, stage.height);
             if let Some(projection) = IntegerProjection::new(&stage.mvp, mesh.positions(), mesh.bounds(), w, h, S::SUBPIXEL_BITS) {
                 let lit_in_model_space = E::LIT_COLOR && stage.model_space;
@@ -458,7 +458,7 @@ where
         mesh: &Mesh<'_>,
         material: &'m Material<E, P, D>,
         stage: &VertexStage<'_, E>,
-        projection: &J,
+        vertices: &J,
         base: usize,
     ) -> Result<(), DrawError>
     where
@@ -469,7 +469,7 @@ where
     {
         let (model, lights) = (&stage.model, self.lights);
         for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
-            *slot = projection.vertex::<E, C, V>(stage, mesh, i);
+            *slot = vertices.vertex::<E, C, V>(stage, mesh, i);
         }
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
@@ -490,8 +490,8 @@ where
             let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
                 let i = local[vi];
                 ClipVertex {
-                    pos: projection.clip_position(stage, mesh, i),
-                    attrs: projection.varyings::<E, C, V>(stage, mesh, i),
+                    pos: vertices.clip_position(stage, mesh, i),
+                    attrs: vertices.varyings::<E, C, V>(stage, mesh, i),
                     src: corners[vi],
                 }
             });

@@ -34,7 +34,7 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// ([`IntegerVertices`](crate::vertex::IntegerVertices)) rather than in
     /// `f32`: where there is no FPU, that is the bulk of a small-triangle
     /// frame.
-    const INTEGER_PROJECTION: bool;
+    const INTEGER_VERTICES: bool;
     /// From `f32` (saturating; NaN gives zero).
     fn from_f32(v: f32) -> Self;
     /// A vertex value for plane setup: like [`Interp::from_f32`], but
@@ -229,7 +229,7 @@ impl Interp for f32 {
     const DEPTH_SCALE: f32 = 1.0;
     const Q_SCALE: f32 = 1.0;
     const WRAPS: bool = false;
-    const INTEGER_PROJECTION: bool = false;
+    const INTEGER_VERTICES: bool = false;
     #[inline]
     fn from_f32(v: f32) -> Self {
         if v.is_nan() {
@@ -386,7 +386,7 @@ impl Interp for Fixed {
     const DEPTH_SCALE: f32 = 0.5;
     const Q_SCALE: f32 = 8192.0;
     const WRAPS: bool = true;
-    const INTEGER_PROJECTION: bool = true;
+    const INTEGER_VERTICES: bool = true;
     #[inline]
     fn from_f32(v: f32) -> Self {
         Fixed::from_f32(v)

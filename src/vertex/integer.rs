@@ -1,5 +1,5 @@
 //! The vertex stage's positions in integers, for fixed-point settings
-//! ([`Interp::INTEGER_PROJECTION`](crate::math::Interp)): on a core without
+//! ([`Interp::INTEGER_VERTICES`](crate::math::Interp)): on a core without
 //! an FPU each `f32` operation is a library call of 50 to 100 instructions,
 //! and transforming, projecting and snapping a vertex took about 40 of them.
 //!

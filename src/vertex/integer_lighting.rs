@@ -83,7 +83,7 @@ impl<'a> IntegerLighting<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::effect::lit;
+    use crate::effect::lit_by;
     use crate::math::{xorshift, Vec3};
     use crate::scene::{DirectionalLight, Lights};
 
@@ -107,7 +107,7 @@ mod tests {
             let integer = IntegerLighting::new(&lighting, Vectors::F32(&normals), true).expect("ambient and directional light");
             for (i, n) in normals.iter().enumerate() {
                 let color = Rgb888::new((u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8);
-                let want = lit(lighting.diffuse(Vec3::ZERO, *n), color);
+                let want = lit_by(&lighting, Vec3::ZERO, *n, color);
                 for (g, w) in integer.lit(i, color).iter().zip(want) {
                     worst = worst.max((g - w).abs());
                 }
