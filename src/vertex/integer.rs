@@ -20,10 +20,10 @@
 //! - one reciprocal of `w` ([`reciprocal_q61`]: a 32-bit division and a
 //!   Newton step) gives x, y, depth and `1 / w` by multiplies and shifts.
 //!
-//! A draw call whose matrix or bounds do not fit this scheme (coordinates
-//! beyond `2^100`, a viewport row `2^22` times larger than the w row, a
-//! zero w row) goes through the `f32` stage instead: [`IntegerProjection::new`]
-//! returns `None`.
+//! A draw call whose numbers the scheme cannot hold (a bounding box or a
+//! matrix row beyond the exponents it allows, x or y rows out of all
+//! proportion to the w row, a zero w row) goes through the `f32` stage
+//! instead: [`IntegerProjection::new`] returns `None`.
 //!
 //! Triangles that need clipping are clipped in `f32` from the same integer
 //! clip coordinates ([`IntegerProjection::clip_position`]), so a vertex the
