@@ -440,12 +440,10 @@ where
         };
         if <S::Interp as crate::math::Interp>::INTEGER_VERTICES {
             let (w, h) = (stage.width, stage.height);
-            if let Some(projection) = IntegerProjection::new(&stage.mvp, mesh.positions(), mesh.bounds(), w, h, S::SUBPIXEL_BITS) {
-                let lit_in_model_space = E::LIT_COLOR && stage.model_space;
-                let lighting =
-                    lit_in_model_space.then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals())).flatten();
-                return self.queue_mesh(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
-            }
+            let projection = IntegerProjection::new(&stage.mvp, mesh.positions(), mesh.bounds(), w, h, S::SUBPIXEL_BITS);
+            let lit_in_model_space = E::LIT_COLOR && stage.model_space;
+            let lighting = lit_in_model_space.then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals())).flatten();
+            return self.queue_mesh(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
         }
         self.queue_mesh(mesh, material, &stage, &FloatVertices, base)
     }

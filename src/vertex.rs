@@ -178,6 +178,15 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
     ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
 }
 
+/// [`project`] as a call, for the rare draw call of a fixed-point
+/// renderer that integers cannot hold: one copy per `V`, not one inlined
+/// into every material's vertex loop.
+#[inline(never)]
+#[cold]
+fn project_out_of_line<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
+    project(v, width, height, subpixel_bits)
+}
+
 /// The arithmetic a draw call's vertices go through: `f32`
 /// ([`FloatVertices`]) or, for fixed-point settings, integers
 /// ([`IntegerVertices`]). The triangle loop is generic over it.
@@ -209,11 +218,13 @@ impl VertexArithmetic for FloatVertices {
     }
 }
 
-/// The vertex stage in integers: positions always, the lit color where
-/// [`IntegerLighting`] covers the draw call's lights (else in `f32`).
+/// The vertex stage in integers: positions where [`IntegerProjection`]
+/// holds the draw call, the lit color where [`IntegerLighting`] covers its
+/// lights, the rest in `f32`. (One type for all cases, decided per draw
+/// call, so that a firmware holds one triangle loop per material.)
 pub struct IntegerVertices<'a> {
-    /// The draw call's transform and viewport.
-    pub projection: IntegerProjection<'a>,
+    /// The draw call's transform and viewport, if integers hold them.
+    pub projection: Option<IntegerProjection<'a>>,
     /// Its lights, if integers cover them.
     pub lighting: Option<IntegerLighting<'a>>,
 }
@@ -228,10 +239,20 @@ impl VertexArithmetic for IntegerVertices<'_> {
     }
     #[inline(always)]
     fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        self.projection.project(i, self.varyings::<E, C, V>(stage, mesh, i))
+        let attrs = self.varyings::<E, C, V>(stage, mesh, i);
+        match &self.projection {
+            Some(p) => p.project(i, attrs),
+            None => {
+                let v = ClipVertex { pos: stage.clip_position(mesh.position(i)), attrs, src: 0 };
+                project_out_of_line(&v, stage.width, stage.height, stage.subpixel_bits)
+            }
+        }
     }
     #[inline(always)]
-    fn clip_position<E: Effect>(&self, _: &VertexStage<'_, E>, _: &Mesh<'_>, i: usize) -> Vec4 {
-        self.projection.clip_position(i)
+    fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        match &self.projection {
+            Some(p) => p.clip_position(i),
+            None => stage.clip_position(mesh.position(i)),
+        }
     }
 }
