@@ -1,24 +1,26 @@
 //! Vertex lighting in integers, for fixed-point settings: the lit color
 //! ([`VertexInput::lit`](crate::effect::VertexInput)) of Gouraud and
-//! textured effects from the ambient and directional lights, in 15-bit
-//! fractions. Without an FPU the `f32` version (a dot product, clamps,
-//! three products by the color) is some twenty library calls a vertex.
+//! textured effects from the ambient and directional lights, in 30-bit
+//! fractions (within a thousandth of a level of the `f32` result). Without
+//! an FPU the `f32` version (a dot product, clamps, three products by the
+//! color) is some twenty library calls a vertex.
 //!
 //! It covers the common case, a draw call lit in model space (a
-//! similarity model matrix) by ambient and directional light of at most 2
-//! per channel, on a mesh of unit normals; any other (a point light, whose
-//! direction needs a normalization per vertex) is lit in `f32`:
+//! similarity model matrix) by ambient and directional light of less than
+//! 2 per channel, on a mesh of unit normals; any other (a point light,
+//! whose direction needs a normalization per vertex) is lit in `f32`:
 //! [`IntegerLighting::new`] returns `None`.
 
-use super::integer::scaled_rounded;
+use super::integer::{f32_from_parts, scaled_rounded};
+use crate::math::mul_wide;
 use crate::mesh::Vectors;
 use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
 
-/// One in 15-bit fractions.
-const ONE: i32 = 1 << 15;
+/// One in 30-bit fractions.
+const ONE: i32 = 1 << 30;
 
-/// The lights of one draw call in 15-bit fractions.
+/// The lights of one draw call in 30-bit fractions.
 #[derive(Clone, Copy, Debug)]
 pub struct IntegerLighting<'a> {
     normals: Vectors<'a>,
@@ -27,9 +29,10 @@ pub struct IntegerLighting<'a> {
     sun: ([i32; 3], [i32; 3]),
 }
 
-/// `v` in 15-bit fractions (rounded), if it is in `[0, 2)`.
+/// `v` in 30-bit fractions (truncated: within 2^-30), if it is in `[0, 2)`.
 fn fraction(v: f32) -> Option<i32> {
-    (0.0..2.0).contains(&v).then(|| ((v * ONE as f32 + 0.5) as i32).min(2 * ONE - 1))
+    // Scaling by a power of two is exact; `as` saturates at 2^31 - 1.
+    (0.0..2.0).contains(&v).then_some((v * ONE as f32) as i32)
 }
 
 impl<'a> IntegerLighting<'a> {
@@ -44,37 +47,39 @@ impl<'a> IntegerLighting<'a> {
         let ambient = color(lights.ambient)?;
         let sun = match lights.sun {
             // A unit vector: each component in [-1, 1], rounded.
-            Some((d, c)) => ([d.x, d.y, d.z].map(|v| scaled_rounded(v, 15, ONE).unwrap_or(0)), color(c)?),
+            Some((d, c)) => ([d.x, d.y, d.z].map(|v| scaled_rounded(v, 30, ONE).unwrap_or(0)), color(c)?),
             None => ([0; 3], [0; 3]),
         };
         Some(Self { normals, ambient, sun })
     }
 
-    /// The normal of vertex `i` in 15-bit fractions.
+    /// The normal of vertex `i` in 30-bit fractions.
     #[inline(always)]
     fn normal(&self, i: usize) -> [i32; 3] {
         match self.normals {
             // Unit normals (checked when the mesh was built): finite, and
             // each component within [-1, 1] but for rounding.
-            Vectors::F32(n) => n.get(i).map_or([0; 3], |n| [n.x, n.y, n.z].map(|v| scaled_rounded(v, 15, ONE).unwrap_or(0))),
-            // Steps of 1/32767: 15-bit fractions but for 2^-15 of scale.
-            Vectors::I16 { steps, .. } => steps.get(i).map_or([0; 3], |s| s.map(i32::from)),
+            Vectors::F32(n) => n.get(i).map_or([0; 3], |n| [n.x, n.y, n.z].map(|v| scaled_rounded(v, 30, ONE).unwrap_or(0))),
+            // Steps of 1/32767: 2^30 / 32767 is 32769 within 2^-30.
+            Vectors::I16 { steps, .. } => steps.get(i).map_or([0; 3], |s| s.map(|v| v as i32 * 32769)),
         }
     }
 
     /// The lit color of vertex `i` of color `color`, per channel in
-    /// `[0, 255]`, exact in `f32` (a multiple of 2^-15 below 2^8).
+    /// `[0, 255]`, exact in `f32` (a multiple of 2^-23 below 2^8).
     #[inline(always)]
     pub fn lit(&self, i: usize, color: Rgb888) -> [f32; 3] {
         let (direction, sun) = self.sun;
         let n = self.normal(i);
-        // Each product at most 2^30, and so is the sum (both vectors unit).
-        let dot = (n[0] * direction[0]).wrapping_add(n[1] * direction[1]).wrapping_add(n[2] * direction[2]);
-        let facing = (dot.clamp(0, 1 << 30) + (1 << 14)) >> 15;
+        // Each product at most 2^60, and so is the sum (both vectors unit).
+        let dot = mul_wide(n[0], direction[0]) + mul_wide(n[1], direction[1]) + mul_wide(n[2], direction[2]);
+        let facing = ((dot.clamp(0, 1 << 60) + (1 << 29)) >> 30) as i32;
         let channel = |k: usize, c: u8| {
-            // sun < 2^16 and facing <= 2^15: the product fits.
-            let light = (self.ambient[k] + ((sun[k] * facing + (1 << 14)) >> 15)).min(ONE);
-            super::integer::f32_from_parts((light * c as i32) as u32, -15)
+            // Both terms below 2^31: their sum fits 32 bits unsigned.
+            let term = ((mul_wide(sun[k], facing) + (1 << 29)) >> 30) as u32;
+            let light = (self.ambient[k] as u32 + term).min(ONE as u32);
+            // 2^23 times 255 fits too.
+            f32_from_parts((light >> 7) * c as u32, -23)
         };
         [channel(0, color.r()), channel(1, color.g()), channel(2, color.b())]
     }
@@ -88,7 +93,7 @@ mod tests {
     use crate::scene::{DirectionalLight, Lights};
 
     #[test]
-    fn integer_lighting_matches_f32_within_three_hundredths_of_a_level() {
+    fn integer_lighting_matches_f32_within_a_thousandth_of_a_level() {
         let mut next = xorshift(0xC0FF_EE11);
         let mut u = move |lo: f32, hi: f32| lo + (hi - lo) * (next() as f32 / u32::MAX as f32);
         let mut worst = 0.0f32;
@@ -113,9 +118,9 @@ mod tests {
                 }
             }
         }
-        // Rounding to 2^-15 of the lights, normal, N·L and their product:
-        // some 2^-13 of the light, 0.03 of a level.
-        assert!(worst < 0.03, "worst difference {worst} of a level");
+        // Rounding to 2^-30 of the lights, normal, N·L and their product,
+        // and the f32 result's own rounding.
+        assert!(worst < 0.001, "worst difference {worst} of a level");
         assert!(worst > 0.0);
     }
 
