@@ -57,19 +57,23 @@ pub struct VertexInput {
     pub color: Rgb888,
     /// Texture coordinate (zero if the mesh has none).
     pub uv: Vec2,
-    /// The color lit by the lights, per channel in `[0, 255]`:
-    /// `clamp(ambient + Σ light·clamp(N·L, 0, 1), 0, 1) · color`, computed
-    /// by the vertex stage for effects with [`Effect::LIT_COLOR`] (in
-    /// integers for fixed-point settings where it can), zero for others.
+    /// The color lit by the lights, per channel in the effect's units
+    /// plus one half (the span loop's truncation then rounds):
+    /// `clamp(ambient + Σ light·clamp(N·L, 0, 1), 0, 1) · color · scale +
+    /// 0.5`, with `color` in `[0, 255]` and `scale` the effect's
+    /// [`Effect::lit_scale`]. Computed by the vertex stage for effects
+    /// with [`Effect::LIT_COLOR`] (in integers for fixed-point settings
+    /// where it can, the scale folded into the lights), zero for others.
     pub lit: [f32; 3],
 }
 
 impl VertexInput {
     /// The input of a vertex at `position` with unit `normal`, `color`
-    /// and `uv`, lit by `lights` in `f32` if `E` reads [`VertexInput::lit`].
+    /// and `uv`, lit by `lights` in `f32` for display color `C` if `E`
+    /// reads [`VertexInput::lit`].
     #[inline(always)]
-    pub fn new<E: Effect>(position: Vec3, normal: Vec3, color: Rgb888, uv: Vec2, lights: &Lighting) -> Self {
-        let lit = if E::LIT_COLOR { lit_by(lights, position, normal, color) } else { [0.0; 3] };
+    pub fn new<C: Color, E: Effect>(position: Vec3, normal: Vec3, color: Rgb888, uv: Vec2, lights: &Lighting) -> Self {
+        let lit = if E::LIT_COLOR { lit_input::<C, E>(lights, position, normal, color) } else { [0.0; 3] };
         Self { position, normal, color, uv, lit }
     }
 }
@@ -99,6 +103,15 @@ pub trait Effect: Copy {
     const LIT_COLOR: bool = false;
     /// Name for reports.
     const NAME: &'static str;
+
+    /// Per channel, what [`VertexInput::lit`] is scaled by for display
+    /// color `C` (1: levels of 0 to 255). An effect interpolating the lit
+    /// color in `C`'s own channel depth asks for `C`'s maximum over 255,
+    /// and the vertex stage folds it into its lighting (in integers, into
+    /// the lights, once per draw call).
+    fn lit_scale<C: Color>() -> [f32; 3] {
+        [1.0; 3]
+    }
 
     /// The range each varying must stay in at every pixel (inclusive).
     /// The rasterizer guarantees it: with a wrapping scalar it checks each
@@ -157,6 +170,13 @@ pub(crate) fn lit_by(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb
     lit(lights.diffuse(position, normal), color)
 }
 
+/// [`VertexInput::lit`] for effect `E` and display color `C`, in `f32`.
+#[inline(always)]
+pub(crate) fn lit_input<C: Color, E: Effect>(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
+    let (l, s) = (lit_by(lights, position, normal, color), E::lit_scale::<C>());
+    [l[0] * s[0] + 0.5, l[1] * s[1] + 0.5, l[2] * s[2] + 0.5]
+}
+
 /// Light times color, per channel, clamped to [0, 255].
 #[inline]
 fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
@@ -169,10 +189,22 @@ fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
 /// `embedded-graphics` does when it converts colors.
 #[inline]
 fn rgb_varyings<C: Color>(c: [f32; 3]) -> [f32; MAX_VARYINGS] {
-    let scale = |v: f32, max: u8| v * (max as f32 * (1.0 / 255.0)) + 0.5;
+    let scale = |v: f32, max: u8| v * channel_scale(max) + 0.5;
     let mut v = [0.0; MAX_VARYINGS];
     v[..3].copy_from_slice(&[scale(c[0], C::MAX_R), scale(c[1], C::MAX_G), scale(c[2], C::MAX_B)]);
     v
+}
+
+/// A channel of at most `max` per level of 0 to 255.
+#[inline(always)]
+fn channel_scale(max: u8) -> f32 {
+    max as f32 * (1.0 / 255.0)
+}
+
+/// The channel scales of `C`.
+#[inline(always)]
+fn channel_scales<C: Color>() -> [f32; 3] {
+    [channel_scale(C::MAX_R), channel_scale(C::MAX_G), channel_scale(C::MAX_B)]
 }
 
 #[inline]
@@ -226,9 +258,14 @@ impl Effect for Gouraud {
     const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
     const NAME: &'static str = "gouraud";
+    fn lit_scale<C: Color>() -> [f32; 3] {
+        channel_scales::<C>()
+    }
     #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
-        rgb_varyings::<C>(v.lit)
+        let mut out = [0.0; MAX_VARYINGS];
+        out[..3].copy_from_slice(&v.lit);
+        out
     }
     fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
@@ -387,18 +424,13 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
     #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         let l = v.lit;
-        // Half a level up, like the color effects' channels: truncation
-        // then rounds, and the values keep half a level of margin inside
-        // their range (values on its bounds would send every triangle
-        // whose rounded planes overshoot them to the careful path).
+        // The light carries half a level, like the color effects'
+        // channels: truncation then rounds, and the values keep half a
+        // level of margin inside their range (values on its bounds would
+        // send every triangle whose rounded planes overshoot them to the
+        // careful path).
         let mut out = [0.0; MAX_VARYINGS];
-        out[..5].copy_from_slice(&[
-            v.uv.x * self.texture.width() as f32,
-            v.uv.y * self.texture.height() as f32,
-            l[0] + 0.5,
-            l[1] + 0.5,
-            l[2] + 0.5,
-        ]);
+        out[..5].copy_from_slice(&[v.uv.x * self.texture.width() as f32, v.uv.y * self.texture.height() as f32, l[0], l[1], l[2]]);
         out
     }
 

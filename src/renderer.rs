@@ -442,7 +442,9 @@ where
             let (w, h) = (stage.width, stage.height);
             let projection = IntegerProjection::new(&stage.mvp, mesh.positions(), mesh.bounds(), w, h, S::SUBPIXEL_BITS);
             let lit_in_model_space = E::LIT_COLOR && stage.model_space;
-            let lighting = lit_in_model_space.then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals())).flatten();
+            let lighting = lit_in_model_space
+                .then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals(), E::lit_scale::<C>()))
+                .flatten();
             return self.queue_mesh(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
         }
         self.queue_mesh(mesh, material, &stage, &FloatVertices, base)
@@ -522,7 +524,7 @@ where
         let lights = Lighting::UNLIT;
         for tri in triangles {
             let attrs = |v: &TriVertex| -> [f32; V] {
-                let input = VertexInput::new::<E>(Vec3::ZERO, Vec3::ZERO, v.color, Vec2::new(0.0, 0.0), &lights);
+                let input = VertexInput::new::<C, E>(Vec3::ZERO, Vec3::ZERO, v.color, Vec2::new(0.0, 0.0), &lights);
                 vertex_varyings::<C, E, V>(&material.effect, &input, &lights)
             };
             let face = if E::USES_FACE {

@@ -7,7 +7,7 @@
 //! covers the lights).
 
 use crate::clip::ClipVertex;
-use crate::effect::{lit_by, vertex_varyings, Color, Effect, VertexInput};
+use crate::effect::{lit_input, vertex_varyings, Color, Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::raster::{snap, ScreenVertex};
@@ -82,7 +82,9 @@ impl<E: Effect> VertexStage<'_, E> {
     /// Varyings of mesh vertex `i`, lit in `f32`.
     #[inline(always)]
     pub fn varyings<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> [f32; V] {
-        self.varyings_at::<C, V>(mesh, i, mesh.position(i), |position, normal, color| lit_by(self.lights, position, normal, color))
+        self.varyings_at::<C, V>(mesh, i, mesh.position(i), |position, normal, color| {
+            lit_input::<C, E>(self.lights, position, normal, color)
+        })
     }
 
     /// Varyings of mesh vertex `i` at model-space position `p` (read once
@@ -130,7 +132,7 @@ impl<E: Effect> VertexStage<'_, E> {
     pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
         let p = mesh.position(i);
         let clip = self.clip_position(p);
-        let attrs = self.varyings_at::<C, V>(mesh, i, p, |position, normal, color| lit_by(self.lights, position, normal, color));
+        let attrs = self.varyings_at::<C, V>(mesh, i, p, |position, normal, color| lit_input::<C, E>(self.lights, position, normal, color));
         project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
     }
 }

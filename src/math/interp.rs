@@ -173,13 +173,13 @@ impl FixedBasis {
         }
         // 1 / area = r * 2^(n - 93), r in (2^29, 2^30), from the area's
         // top 32 bits `m`.
-        let n = area.leading_zeros();
+        let n = super::leading_zeros_u64(area);
         let r = reciprocal_q61(((area << n) >> 32) as u32);
         let r2 = if area2 < 0 { -(r << 1) } else { r << 1 };
         // Offsets below 2^t, t <= 30: each coefficient o r 2^-t is the high
         // word of (o 2^(31 - t)) (2 r), below 2^30 (one multiply-high).
         let span = ox1.unsigned_abs() | oy1.unsigned_abs() | ox2.unsigned_abs() | oy2.unsigned_abs();
-        let t = 32 - span.leading_zeros();
+        let t = 32 - super::leading_zeros(span);
         let up = 31 - t;
         let k = |o: i32| (mul_wide(o << up, r2) >> 32) as i32;
         // dx = (d1 oy2 - d2 oy1) r 2^(f + n - 93) = (d1 k0 + d2 k1) 2^(t + f + n - 93).

@@ -37,10 +37,82 @@ pub(crate) const HARD_FLOAT: bool = !cfg!(target_arch = "arm") || cfg!(target_ab
 /// many times over, it was slower than the library call.
 #[inline(always)]
 pub(crate) fn mul_wide(a: i32, b: i32) -> i64 {
-    if cfg!(soft3d_no_long_multiply) {
+    if cfg!(soft3d_armv6m) {
         mul_wide_by_halves(a, b)
     } else {
         a as i64 * b as i64
+    }
+}
+
+/// `v.leading_zeros()`, which ARMv6-M (no `CLZ` instruction) turns into a
+/// library call of some 50 instructions; a binary search inlined costs
+/// about 20 there. Elsewhere it is the instruction.
+#[inline(always)]
+pub(crate) fn leading_zeros(v: u32) -> u32 {
+    if cfg!(soft3d_armv6m) {
+        leading_zeros_by_search(v)
+    } else {
+        v.leading_zeros()
+    }
+}
+
+#[inline(always)]
+fn leading_zeros_by_search(v: u32) -> u32 {
+    if v == 0 {
+        return 32;
+    }
+    let (mut v, mut n) = (v, 0);
+    for bits in [16, 8, 4, 2, 1] {
+        if v >> (32 - bits) == 0 {
+            n += bits;
+            v <<= bits;
+        }
+    }
+    n
+}
+
+/// [`leading_zeros`] of a `u64`.
+#[inline(always)]
+pub(crate) fn leading_zeros_u64(v: u64) -> u32 {
+    let high = (v >> 32) as u32;
+    if high != 0 {
+        leading_zeros(high)
+    } else {
+        32 + leading_zeros(v as u32)
+    }
+}
+
+/// `(floor(n / d), n - d * floor(n / d))` for `d > 0`, by shifts and
+/// subtractions in time proportional to the quotient's bits. ARMv6-M has
+/// no divide instruction and its library division takes some 150
+/// instructions whatever the quotient; the edge walker's quotients are
+/// mostly a few pixels (about 25 instructions here).
+#[inline]
+pub(crate) fn div_floor_small(n: i32, d: i32) -> (i32, i32) {
+    let (mut r, d) = (n.unsigned_abs(), d as u32);
+    let mut q = 0;
+    if r >= d {
+        // The largest d 2^k at most r; doubling only while at most r / 2
+        // cannot overflow.
+        let (mut dk, mut bit) = (d, 1u32);
+        while dk <= r >> 1 {
+            dk <<= 1;
+            bit <<= 1;
+        }
+        while bit != 0 {
+            if r >= dk {
+                r -= dk;
+                q |= bit;
+            }
+            dk >>= 1;
+            bit >>= 1;
+        }
+    }
+    // |n| = q d + r; for negative n the floor is one lower where r > 0.
+    match (n < 0, r) {
+        (false, _) => (q as i32, r as i32),
+        (true, 0) => ((q as i32).wrapping_neg(), 0),
+        (true, _) => ((q as i32).wrapping_neg() - 1, (d - r) as i32),
     }
 }
 
@@ -111,5 +183,30 @@ mod tests {
             assert_eq!(mul_wide_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
         }
         assert_eq!(mul_wide(-7, 6), -42);
+    }
+
+    #[test]
+    fn small_floor_division_is_exact() {
+        let mut next = xorshift(0x7F4A_7C15);
+        let edges = [0, 1, -1, 2, -2, 7, -7, i32::MAX, i32::MIN, i32::MIN + 1, 1 << 30, -(1 << 30)];
+        let divisors = [1, 2, 3, 7, 64, 1 << 20, i32::MAX, (1 << 30) + 1];
+        let randoms = (0..100_000).map(|_| (next() as i32 >> (next() % 31), (next() >> (1 + next() % 31)).max(1) as i32));
+        let pairs = edges.iter().flat_map(|&n| divisors.iter().map(move |&d| (n, d)));
+        for (n, d) in pairs.chain(randoms) {
+            let want = (n.div_euclid(d), n.rem_euclid(d));
+            assert_eq!(div_floor_small(n, d), want, "{n} / {d}");
+        }
+    }
+
+    #[test]
+    fn leading_zeros_by_search_counts_like_the_instruction() {
+        let mut next = xorshift(0x1B87_3593);
+        let singles = (0..32).flat_map(|b| [1u32 << b, (1u32 << b) - 1, u32::MAX >> b]);
+        for v in singles.chain((0..100_000).map(|_| next() >> (next() % 32))) {
+            assert_eq!(leading_zeros_by_search(v), v.leading_zeros(), "{v:#x}");
+        }
+        for v in [0u64, 1, u32::MAX as u64, 1 << 32, u64::MAX, 0x0000_1234_0000_0000] {
+            assert_eq!(leading_zeros_u64(v), v.leading_zeros(), "{v:#x}");
+        }
     }
 }

@@ -94,7 +94,7 @@ pub(super) fn f32_from_parts(v: u32, e: i32) -> f32 {
         return 0.0;
     }
     // v = m 2^(31 - n) with m in [1, 2): the exponent field is 127 + 31 - n + e.
-    let n = v.leading_zeros();
+    let n = crate::math::leading_zeros(v);
     let field = 158 - n as i32 + e;
     if field <= 0 {
         0.0
@@ -275,7 +275,7 @@ impl<'a> IntegerProjection<'a> {
                 }
                 // 0 <= z <= w, so w > 0 unless both are zero.
                 if flags == 0 && w > 0 {
-                    let n = (w as u32).leading_zeros();
+                    let n = crate::math::leading_zeros(w as u32);
                     let r = reciprocal_q61((w as u32) << n);
                     if let (Some(sx), Some(sy)) = (self.snap(0, x, r, n), self.snap(1, y, r, n)) {
                         // 1 / w = r 2^(n - 61 + s), and z / w = (z r) 2^(n - 61),

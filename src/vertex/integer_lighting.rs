@@ -24,9 +24,13 @@ const ONE: i32 = 1 << 30;
 #[derive(Clone, Copy, Debug)]
 pub struct IntegerLighting<'a> {
     normals: Vectors<'a>,
+    /// The lights' colors are times the effect's scale per channel
+    /// ([`Effect::lit_scale`](crate::effect::Effect::lit_scale)), and so
+    /// is `cap`, the most light a channel takes.
     ambient: [i32; 3],
     /// Unit direction toward the light, and its color (zero if none).
     sun: ([i32; 3], [i32; 3]),
+    cap: [u32; 3],
 }
 
 /// `v` in 30-bit fractions (truncated: within 2^-30), if it is in `[0, 2)`.
@@ -37,20 +41,22 @@ fn fraction(v: f32) -> Option<i32> {
 
 impl<'a> IntegerLighting<'a> {
     /// The integer form of `lights` (in model space) for a mesh with
-    /// `normals` (all of unit length or zero if `unit_normals`), or `None`
-    /// where it does not apply.
-    pub fn new(lights: &Lighting, normals: Vectors<'a>, unit_normals: bool) -> Option<Self> {
+    /// `normals` (all of unit length or zero if `unit_normals`), lighting
+    /// for an effect whose [`lit_scale`](crate::effect::Effect::lit_scale)
+    /// is `scale`, or `None` where it does not apply.
+    pub fn new(lights: &Lighting, normals: Vectors<'a>, unit_normals: bool, scale: [f32; 3]) -> Option<Self> {
         if lights.point.is_some() || !unit_normals {
             return None;
         }
-        let color = |c: crate::math::Vec3| Some([fraction(c.x)?, fraction(c.y)?, fraction(c.z)?]);
+        let color = |c: crate::math::Vec3| Some([fraction(c.x * scale[0])?, fraction(c.y * scale[1])?, fraction(c.z * scale[2])?]);
         let ambient = color(lights.ambient)?;
         let sun = match lights.sun {
             // A unit vector: each component in [-1, 1], rounded.
             Some((d, c)) => ([d.x, d.y, d.z].map(|v| scaled_rounded(v, 30, ONE).unwrap_or(0)), color(c)?),
             None => ([0; 3], [0; 3]),
         };
-        Some(Self { normals, ambient, sun })
+        let cap = color(crate::math::Vec3::ONE)?.map(|c| c as u32);
+        Some(Self { normals, ambient, sun, cap })
     }
 
     /// The normal of vertex `i` in 30-bit fractions.
@@ -65,8 +71,9 @@ impl<'a> IntegerLighting<'a> {
         }
     }
 
-    /// The lit color of vertex `i` of color `color`, per channel in
-    /// `[0, 255]`, exact in `f32` (a multiple of 2^-23 below 2^8).
+    /// [`VertexInput::lit`](crate::effect::VertexInput::lit) of vertex
+    /// `i` of color `color`: computed in units of 2^-23 (below 2^31),
+    /// truncated to `f32`.
     #[inline(always)]
     pub fn lit(&self, i: usize, color: Rgb888) -> [f32; 3] {
         let (direction, sun) = self.sun;
@@ -77,9 +84,9 @@ impl<'a> IntegerLighting<'a> {
         let channel = |k: usize, c: u8| {
             // Both terms below 2^31: their sum fits 32 bits unsigned.
             let term = ((mul_wide(sun[k], facing) + (1 << 29)) >> 30) as u32;
-            let light = (self.ambient[k] as u32 + term).min(ONE as u32);
-            // 2^23 times 255 fits too.
-            f32_from_parts((light >> 7) * c as u32, -23)
+            let light = (self.ambient[k] as u32 + term).min(self.cap[k]);
+            // At most 2^23 times 255, plus one half: below 2^31.
+            f32_from_parts((light >> 7) * c as u32 + (1 << 22), -23)
         };
         [channel(0, color.r()), channel(1, color.g()), channel(2, color.b())]
     }
@@ -88,9 +95,10 @@ impl<'a> IntegerLighting<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::effect::lit_by;
+    use crate::effect::{lit_input, Effect, Gouraud};
     use crate::math::{xorshift, Vec3};
     use crate::scene::{DirectionalLight, Lights};
+    use embedded_graphics::pixelcolor::Rgb565;
 
     #[test]
     fn integer_lighting_matches_f32_within_a_thousandth_of_a_level() {
@@ -109,10 +117,17 @@ mod tests {
             let normals: std::vec::Vec<Vec3> = (0..16)
                 .map(|k| if k == 0 { Vec3::ZERO } else { Vec3::new(u(-1.0, 1.0), u(-1.0, 1.0), u(-1.0, 1.0)).normalize_or_zero() })
                 .collect();
-            let integer = IntegerLighting::new(&lighting, Vectors::F32(&normals), true).expect("ambient and directional light");
+            // Levels of 0 to 255 (textures), and Rgb565's channels (Gouraud).
+            let rgb565 = case % 2 == 0;
+            let scale = if rgb565 { Gouraud::lit_scale::<Rgb565>() } else { [1.0; 3] };
+            let integer = IntegerLighting::new(&lighting, Vectors::F32(&normals), true, scale).expect("ambient and directional light");
             for (i, n) in normals.iter().enumerate() {
                 let color = Rgb888::new((u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8);
-                let want = lit_by(&lighting, Vec3::ZERO, *n, color);
+                let want = if rgb565 {
+                    lit_input::<Rgb565, Gouraud>(&lighting, Vec3::ZERO, *n, color)
+                } else {
+                    lit_input::<Rgb565, crate::effect::Flat>(&lighting, Vec3::ZERO, *n, color)
+                };
                 for (g, w) in integer.lit(i, color).iter().zip(want) {
                     worst = worst.max((g - w).abs());
                 }
@@ -129,13 +144,15 @@ mod tests {
         let lit_by = |lights: Lights| Lighting::new(&lights, Vec3::ZERO);
         let n = [Vec3::new(0.0, 0.0, 1.0)];
         let mut lights = Lights::default();
-        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true).is_some());
-        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), false).is_none());
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true, [1.0; 3]).is_some());
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), false, [1.0; 3]).is_none());
         lights.ambient = Vec3::new(2.5, 0.0, 0.0);
-        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true).is_none());
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true, [1.0; 3]).is_none());
         lights.ambient = Vec3::new(f32::NAN, 0.0, 0.0);
-        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true).is_none());
+        assert!(IntegerLighting::new(&lit_by(lights), Vectors::F32(&n), true, [1.0; 3]).is_none());
         let point = crate::scene::PointLight { position: Vec3::ZERO, color: Vec3::ONE };
-        assert!(IntegerLighting::new(&lit_by(Lights { point: Some(point), ..Lights::default() }), Vectors::F32(&n), true).is_none());
+        assert!(
+            IntegerLighting::new(&lit_by(Lights { point: Some(point), ..Lights::default() }), Vectors::F32(&n), true, [1.0; 3]).is_none()
+        );
     }
 }
