@@ -950,7 +950,7 @@ mod tests {
         for case in 0..200_000 {
             let f = 1 + case % 9;
             let limit = guard(f - 1) as u32;
-            let mut coordinate = || (next() % (2 * limit >> (next() % 24)).max(1)) as i32 - (limit >> (next() % 24)) as i32;
+            let mut coordinate = || (next() % ((2 * limit) >> (next() % 24)).max(1)) as i32 - (limit >> (next() % 24)) as i32;
             let (ax, ay, bx) = (coordinate(), coordinate(), coordinate());
             let by = (ay + 1 + (next() % (limit >> (next() % 28)).max(1)) as i32).min(limit as i32);
             if by <= ay {
