@@ -116,16 +116,55 @@ pub(crate) fn div_floor_small(n: i32, d: i32) -> (i32, i32) {
     }
 }
 
+/// Reciprocal estimates: entry `i` is `2^25 / (513 + 2 i)` rounded, the
+/// reciprocal of the middle of the `i`-th of 256 equal parts of `[1, 2)`,
+/// in units of `2^-16` (512 bytes of flash).
+const RECIPROCALS: [u16; 256] = {
+    let mut table = [0; 256];
+    let mut i = 0;
+    while i < 256 {
+        let d = 513 + 2 * i as u32;
+        table[i] = (((1 << 25) + d / 2) / d) as u16;
+        i += 1;
+    }
+    table
+};
+
 /// `2^61 / m` for a normalized `m` (in `[2^31, 2^32)`), within 2^-28 of
-/// it relatively and in `[2^29, 2^30)`, without a 64-bit division (a long
-/// library routine on every Cortex-M): a 32-bit division of `m`'s top 16
-/// bits estimates it (relative error below 2^-14) and one Newton step
-/// squares that error.
+/// it relatively and in `[2^29, 2^30)`, without a division (a library
+/// routine of some 200 instructions on ARMv6-M, and for 64 bits on every
+/// Cortex-M): a table indexed by `m`'s top 9 bits estimates it within
+/// 2^-9, and two Newton steps square that error twice.
 #[inline(always)]
 pub(crate) fn reciprocal_q61(m: u32) -> i32 {
-    let r0 = (u32::MAX / (m >> 16)) << 13;
-    let e = (1i64 << 61) - (m as u64 * r0 as u64) as i64;
-    (r0 as i64 + (mul_wide(r0 as i32, (e >> 16) as i32) >> 45)).min((1 << 30) - 1) as i32
+    let r0 = (RECIPROCALS[(m >> 23) as usize & 0xFF] as u32) << 14;
+    newton_q61(m, newton_q61(m, r0)).min((1 << 30) - 1) as i32
+}
+
+/// One Newton step toward `2^61 / m` from `r` (below `2^30`, within 2^-8
+/// of it): `r (2 - m r / 2^61)`. The error `2^61 - m r` is then below
+/// 2^53, so its top bits fit 32 and the product is one [`mul_wide`]; the
+/// step lands at or below the reciprocal but for its truncations.
+#[inline(always)]
+fn newton_q61(m: u32, r: u32) -> u32 {
+    let e = (1i64 << 61) - mul_wide_unsigned(m, r) as i64;
+    (r as i64 + (mul_wide(r as i32, (e >> 22) as i32) >> 39)) as u32
+}
+
+/// [`mul_wide`] of unsigned factors.
+#[inline(always)]
+fn mul_wide_unsigned(a: u32, b: u32) -> u64 {
+    if cfg!(soft3d_armv6m) {
+        mul_wide_unsigned_by_halves(a, b)
+    } else {
+        a as u64 * b as u64
+    }
+}
+
+#[inline(always)]
+fn mul_wide_unsigned_by_halves(a: u32, b: u32) -> u64 {
+    let (ah, al, bh, bl) = (a >> 16, a & 0xFFFF, b >> 16, b & 0xFFFF);
+    (((ah * bh) as u64) << 32) + (((ah * bl) as u64 + (al * bh) as u64) << 16) + (al * bl) as u64
 }
 
 /// [`mul_wide`] from 16×16-bit products, for cores without a long multiply.
@@ -183,6 +222,11 @@ mod tests {
             assert_eq!(mul_wide_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
         }
         assert_eq!(mul_wide(-7, 6), -42);
+        for _ in 0..100_000 {
+            let (a, b) = (next(), next() >> (next() % 32));
+            assert_eq!(mul_wide_unsigned_by_halves(a, b), a as u64 * b as u64, "{a} * {b}");
+        }
+        assert_eq!(mul_wide_unsigned_by_halves(u32::MAX, u32::MAX), u32::MAX as u64 * u32::MAX as u64);
     }
 
     #[test]

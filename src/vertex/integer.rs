@@ -17,8 +17,8 @@
 //!   overflows. The x and y rows are premultiplied by the viewport, so the
 //!   quotient by `w` is directly in sub-pixel units;
 //! - the near/far tests compare z with 0 and with w (one scale for both);
-//! - one reciprocal of `w` ([`reciprocal_q61`]: a 32-bit division and a
-//!   Newton step) gives x, y, depth and `1 / w` by multiplies and shifts.
+//! - one reciprocal of `w` ([`reciprocal_q61`]: a table and two Newton
+//!   steps) gives x, y, depth and `1 / w` by multiplies and shifts.
 //!
 //! A draw call whose numbers the scheme cannot hold (a bounding box or a
 //! matrix row beyond the exponents it allows, x or y rows out of all
