@@ -9,7 +9,7 @@
 //! derived from those three numbers with [`Interp::plane_at`] and
 //! [`Interp::plane_within`], so stepping and checking agree exactly.
 
-use super::{mul_wide, reciprocal_q61, Fixed};
+use super::{dot_wide, mul_wide, reciprocal_q61, shr_wide, Fixed};
 
 /// A number type that plane equations are stepped in.
 ///
@@ -214,7 +214,7 @@ impl FixedBasis {
         let (d1, d2) = (b.to_bits().saturating_sub(a.to_bits()), c.to_bits().saturating_sub(a.to_bits()));
         let gradient = |k1: i32, k2: i32| {
             // Each product is below 2^61, so the sum fits.
-            let g = (mul_wide(d1, k1) + mul_wide(d2, k2) + self.half) >> self.shift;
+            let g = shr_wide(mul_wide(d1, k1) + mul_wide(d2, k2) + self.half, self.shift);
             // It fits 32 bits when the high word is the low word's sign
             // (one compare); beyond, it is far past what `is_wide` allows.
             let (low, high) = (g as i32, (g >> 32) as i32);
@@ -375,8 +375,8 @@ impl Fixed {
     #[inline]
     fn plane_exact(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32) -> i64 {
         // |d| < 2^31 and |o| <= 2^30: each product below 2^61, no overflow.
-        let sum = dx.to_bits() as i64 * ox as i64 + dy.to_bits() as i64 * oy as i64;
-        value0.to_bits() as i64 + (sum >> f)
+        let sum = dot_wide(dx.to_bits(), ox, dy.to_bits(), oy);
+        value0.to_bits() as i64 + shr_wide(sum, f)
     }
 }
 

@@ -44,6 +44,48 @@ pub(crate) fn mul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
+/// `a * b + c * d` exactly. On ARMv6-M one call of two products by halves
+/// costs less than two calls of the library's 64×64-bit multiply and,
+/// unlike products inlined at each of the triangle setup's many uses,
+/// leaves the caller its registers (the planes' start values: torus.babylon
+/// 2% fewer instructions; the gradients, though, measured 2% more).
+#[inline(always)]
+pub(crate) fn dot_wide(a: i32, b: i32, c: i32, d: i32) -> i64 {
+    if cfg!(soft3d_armv6m) {
+        dot_by_halves(a, b, c, d)
+    } else {
+        a as i64 * b as i64 + c as i64 * d as i64
+    }
+}
+
+#[inline(never)]
+fn dot_by_halves(a: i32, b: i32, c: i32, d: i32) -> i64 {
+    mul_wide_by_halves(a, b) + mul_wide_by_halves(c, d)
+}
+
+/// `v >> s` for `s < 64`. ARMv6-M calls a library routine for a 64-bit
+/// shift by a variable amount; two 32-bit shifts and an or are cheaper.
+#[inline(always)]
+pub(crate) fn shr_wide(v: i64, s: u32) -> i64 {
+    if cfg!(soft3d_armv6m) {
+        shr_wide_by_words(v, s)
+    } else {
+        v >> s
+    }
+}
+
+#[inline(always)]
+fn shr_wide_by_words(v: i64, s: u32) -> i64 {
+    let (low, high) = (v as u32, (v >> 32) as i32);
+    if s >= 32 {
+        (high >> (s - 32)) as i64
+    } else if s == 0 {
+        v
+    } else {
+        (((high >> s) as i64) << 32) | ((low >> s) | ((high as u32) << (32 - s))) as i64
+    }
+}
+
 /// `v.leading_zeros()`, which ARMv6-M (no `CLZ` instruction) turns into a
 /// library call of some 50 instructions; a binary search inlined costs
 /// about 20 there. Elsewhere it is the instruction.
@@ -239,6 +281,18 @@ mod tests {
         for (n, d) in pairs.chain(randoms) {
             let want = (n.div_euclid(d), n.rem_euclid(d));
             assert_eq!(div_floor_small(n, d), want, "{n} / {d}");
+        }
+    }
+
+    #[test]
+    fn shifts_by_words_are_exact() {
+        let mut next = xorshift(0x5851_F42D);
+        let values = [0, 1, -1, i64::MAX, i64::MIN, 1 << 32, -(1 << 32), 0x1234_5678_9ABC_DEF0];
+        let randoms = (0..100_000).map(|_| (((next() as u64) << 32 | next() as u64) as i64) >> (next() % 64));
+        for v in values.into_iter().chain(randoms) {
+            for s in 0..64 {
+                assert_eq!(shr_wide_by_words(v, s), v >> s, "{v} >> {s}");
+            }
         }
     }
 
