@@ -380,6 +380,30 @@ impl Fixed {
     }
 }
 
+/// `(u32::MAX / d, u32::MAX % d)` for `d` in `[2^16, 2^17)`, exactly,
+/// without a division (on ARMv6-M a library call of some 180
+/// instructions, once per pixel in a perspective-correct span): one
+/// Newton step from the reciprocal table gives the quotient within one,
+/// and the remainder's sign and size correct it.
+#[inline(always)]
+fn max_by_17_bits(d: u32) -> (u32, u32) {
+    // 2^61 / (d 2^15) = 2^46 / d within about 2^-17: the quotient 2^32 / d
+    // (at most 2^16) within a half, truncated.
+    let t = super::reciprocal_q61_coarse(d << 15) >> 14;
+    // The remainder u32::MAX - t d is in (-2d, 2d): in i32 arithmetic
+    // (d < 2^17), wrapping, it comes out exact.
+    let rest = (u32::MAX.wrapping_sub(t.wrapping_mul(d))) as i32;
+    let d = d as i32;
+    let (t, rest) = if rest < 0 {
+        (t - 1, rest + d)
+    } else if rest >= d {
+        (t + 1, rest - d)
+    } else {
+        (t, rest)
+    };
+    (t, rest as u32)
+}
+
 impl Interp for Fixed {
     const NAME: &'static str = "fixed16";
     // Depth up to 65535 does not fit 16.16 signed; it is kept halved (17.15).
@@ -462,7 +486,7 @@ impl Interp for Fixed {
     fn mul_clamped(self, o: Self, lo: Self, hi: Self) -> Self {
         // The product clamped once, in 64 bits: saturating it to 32 bits
         // first would change nothing, `[lo, hi]` being inside.
-        let p = (self.to_bits() as i64 * o.to_bits() as i64) >> Fixed::FRAC_BITS;
+        let p = mul_wide(self.to_bits(), o.to_bits()) >> Fixed::FRAC_BITS;
         Fixed::from_bits(p.clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
     }
     #[inline(always)]
@@ -478,14 +502,20 @@ impl Interp for Fixed {
         // instructions or more on Cortex-M; and no float, so that every
         // core gets the same bits): bits ~ d * 2^(15 - n), so 2^45 / bits
         // ~ (2^32 / d) * 2^(n - 2), within 3e-5 relative.
-        let n = bits.leading_zeros();
+        let n = super::leading_zeros(bits as u32);
         let d = ((bits as u32) << n) >> 15;
         // 2^32 / d rounded: 2^32 = t * d + rest + 1.
-        let t = u32::MAX / d;
-        let rest = u32::MAX - t * d;
+        let (t, rest) = if cfg!(soft3d_armv6m) { max_by_17_bits(d) } else { (u32::MAX / d, u32::MAX % d) };
         let t = if 2 * (rest + 1) >= d { t + 1 } else { t };
-        let r = if n >= 2 { (t as u64) << (n - 2) } else { t as u64 >> 1 };
-        Fixed::from_bits(r.min(i32::MAX as u64) as i32)
+        // t is in [2^15, 2^16]: shifted 15 it still fits 32 bits, and
+        // shifted further it saturates (a 64-bit shift is a library call
+        // on ARMv6-M).
+        let r = match n {
+            0 | 1 => t >> 1,
+            2..=17 => (t << (n - 2)).min(i32::MAX as u32),
+            _ => i32::MAX as u32,
+        };
+        Fixed::from_bits(r as i32)
     }
     #[inline]
     fn rsqrt(self) -> Self {
@@ -546,6 +576,33 @@ impl Interp for Fixed {
 mod tests {
     use super::*;
     use crate::math::xorshift;
+
+    #[test]
+    fn perspective_reciprocals_are_2_to_the_45_over_the_top_17_bits() {
+        // The definition: 2^32 over the divisor's top 17 bits, rounded,
+        // scaled back by the normalization, saturated.
+        let reference = |bits: i32| {
+            let n = bits.leading_zeros();
+            let d = ((bits as u32) << n) >> 15;
+            let t = ((1u64 << 33) / d as u64 + 1) / 2;
+            let r = if n >= 2 { t << (n - 2) } else { t >> 1 };
+            r.min(i32::MAX as u64) as i32
+        };
+        let mut next = xorshift(0x6A09_E667);
+        let edges = [1, 2, 3, 0x7FFF, 0x8000, 0x1_0000, 0x2000_0000, 0x3FFF_FFFF, 0x4000_0000, i32::MAX];
+        for bits in edges.into_iter().chain((0..1_000_000).map(|_| (next() >> (1 + next() % 31)).max(1) as i32)) {
+            assert_eq!(Fixed::from_bits(bits).q_recip().to_bits(), reference(bits), "bits {bits:#x}");
+        }
+        assert_eq!(Fixed::from_bits(0).q_recip().to_bits(), i32::MAX);
+        assert_eq!(Fixed::from_bits(-5).q_recip().to_bits(), i32::MAX);
+    }
+
+    #[test]
+    fn quotients_of_17_bits_without_division_are_exact() {
+        for d in 1 << 16..1 << 17 {
+            assert_eq!(max_by_17_bits(d), (u32::MAX / d, u32::MAX % d), "d = {d}");
+        }
+    }
 
     /// Offsets `[ox1, oy1, ox2, oy2]` of a random triangle, its `area2` and
     /// `f` (1 to 9): from a unit to the guard band in size, slivers

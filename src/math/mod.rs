@@ -179,8 +179,15 @@ const RECIPROCALS: [u16; 256] = {
 /// 2^-9, and two Newton steps square that error twice.
 #[inline(always)]
 pub(crate) fn reciprocal_q61(m: u32) -> i32 {
+    newton_q61(m, reciprocal_q61_coarse(m)).min((1 << 30) - 1) as i32
+}
+
+/// [`reciprocal_q61`] within about 2^-17 (one Newton step), at or below
+/// it but for the step's truncations.
+#[inline(always)]
+pub(crate) fn reciprocal_q61_coarse(m: u32) -> u32 {
     let r0 = (RECIPROCALS[(m >> 23) as usize & 0xFF] as u32) << 14;
-    newton_q61(m, newton_q61(m, r0)).min((1 << 30) - 1) as i32
+    newton_q61(m, r0)
 }
 
 /// One Newton step toward `2^61 / m` from `r` (below `2^30`, within 2^-8
