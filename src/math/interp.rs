@@ -584,7 +584,7 @@ mod tests {
         let reference = |bits: i32| {
             let n = bits.leading_zeros();
             let d = ((bits as u32) << n) >> 15;
-            let t = ((1u64 << 33) / d as u64 + 1) / 2;
+            let t = ((1u64 << 33) + d as u64) / (2 * d as u64);
             let r = if n >= 2 { t << (n - 2) } else { t >> 1 };
             r.min(i32::MAX as u64) as i32
         };
