@@ -74,7 +74,7 @@ impl Fixed {
     /// Product, rounded toward negative infinity, saturating.
     #[inline]
     pub fn saturating_mul(self, o: Self) -> Self {
-        let p = self.0 as i64 * o.0 as i64;
+        let p = super::mul_wide(self.0, o.0);
         let r = (p >> Self::FRAC_BITS) as i32;
         // It fits when the bits above it are all copies of its sign: one
         // compare, not a clamp in 64 bits (two branches per bound).
@@ -101,7 +101,7 @@ impl Fixed {
         let bits = self.0 as u32;
         // Shift by an even amount to m = M * 2^30, M in [1, 4):
         // 1 / sqrt(x) = 2^(9 + s/2) / sqrt(M) in units of 2^-16.
-        let s = bits.leading_zeros() & !1;
+        let s = super::leading_zeros(bits) & !1;
         let m = bits << s;
         // g = 1 / sqrt(M) in units of 2^-30, from the table by the top
         // seven bits of m (`m >> 25` in 32..128), then Newton's
@@ -111,9 +111,9 @@ impl Fixed {
         // so each product is one 32×32→64 multiply.
         let mut g = RSQRT_TABLE[(m >> 25) as usize - 32];
         for _ in 0..2 {
-            let mg = ((m as u64 * g as u64) >> 30) as u32;
-            let mgg = ((mg as u64 * g as u64) >> 30) as u32;
-            g = ((g as u64 * ((3u32 << 30) - mgg) as u64) >> 31) as u32;
+            let mg = (super::mul_wide_unsigned(m, g) >> 30) as u32;
+            let mgg = (super::mul_wide_unsigned(mg, g) >> 30) as u32;
+            g = (super::mul_wide_unsigned(g, (3u32 << 30) - mgg) >> 31) as u32;
         }
         // Rounded to units of 2^-16.
         let shift = 21 - s / 2;

@@ -202,7 +202,7 @@ fn newton_q61(m: u32, r: u32) -> u32 {
 
 /// [`mul_wide`] of unsigned factors.
 #[inline(always)]
-fn mul_wide_unsigned(a: u32, b: u32) -> u64 {
+pub(crate) fn mul_wide_unsigned(a: u32, b: u32) -> u64 {
     if cfg!(soft3d_armv6m) {
         mul_wide_unsigned_by_halves(a, b)
     } else {
