@@ -74,6 +74,9 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     fn add_mul(self, d: Self, n: i32) -> Self;
     /// `self / n` for `n > 0`.
     fn div_int(self, n: i32) -> Self;
+    /// `self / 2^k`, exactly as [`Interp::div_int`] by `2^k` (`k < 31`),
+    /// without a division.
+    fn div_pow2(self, k: u32) -> Self;
     /// `self * o`.
     fn mul(self, o: Self) -> Self;
     /// `self * o` clamped to `[lo, hi]`: [`Interp::mul`] then
@@ -292,6 +295,11 @@ impl Interp for f32 {
         self / n as f32
     }
     #[inline(always)]
+    fn div_pow2(self, k: u32) -> Self {
+        // A power of two: the quotient is the product by its reciprocal.
+        self * (1.0 / (1u32 << k) as f32)
+    }
+    #[inline(always)]
     fn mul(self, o: Self) -> Self {
         self * o
     }
@@ -478,6 +486,13 @@ impl Interp for Fixed {
     fn div_int(self, n: i32) -> Self {
         Fixed::from_bits(self.to_bits().checked_div(n).unwrap_or(0))
     }
+    #[inline(always)]
+    fn div_pow2(self, k: u32) -> Self {
+        // Truncating toward zero like the division: negative values are
+        // raised by 2^k - 1 before the (flooring) shift.
+        let b = self.to_bits();
+        Fixed::from_bits(b.wrapping_add((b >> 31) & ((1 << k) - 1)) >> k)
+    }
     #[inline]
     fn mul(self, o: Self) -> Self {
         self.saturating_mul(o)
@@ -626,6 +641,12 @@ mod tests {
         assert_eq!(S::from_f32(10.5).add_mul(d, 4), v);
         assert_eq!(v.sub(d), S::from_f32(11.25));
         assert_eq!(S::from_f32(3.0).div_int(4), S::from_f32(0.75));
+        let mut next = xorshift(0xBB67_AE85);
+        for _ in 0..20_000 {
+            let v = S::from_f32((next() as i32 >> (next() % 31)) as f32 / 65536.0);
+            let k = next() % 9;
+            assert_eq!(v.div_pow2(k), v.div_int(1 << k), "{} / 2^{k}", v.to_f32());
+        }
         assert_eq!(S::from_f32(300.0).clamp_between(S::from_f32(0.0), S::from_f32(255.0)), S::from_f32(255.0));
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth16(), 40000);
         assert_eq!(S::from_f32(40000.5 * S::DEPTH_SCALE).depth32(), 40000 * 65536 + 32768);
