@@ -513,10 +513,12 @@ impl Interp for Fixed {
             return Fixed::from_bits(i32::MAX);
         }
         // The top 17 bits of the divisor, `d` in [2^16, 2^17), in one
-        // 32-bit division (a 64-bit one is a library call of a hundred
-        // instructions or more on Cortex-M; and no float, so that every
-        // core gets the same bits): bits ~ d * 2^(15 - n), so 2^45 / bits
-        // ~ (2^32 / d) * 2^(n - 2), within 3e-5 relative.
+        // 32-bit division, or on ARMv6-M, which has none, by
+        // `max_by_17_bits` (the same quotient; a 64-bit division is a
+        // library call of a hundred instructions or more on Cortex-M; and
+        // no float, so that every core gets the same bits): bits ~ d *
+        // 2^(15 - n), so 2^45 / bits ~ (2^32 / d) * 2^(n - 2), within 3e-5
+        // relative.
         let n = super::leading_zeros(bits as u32);
         let d = ((bits as u32) << n) >> 15;
         // 2^32 / d rounded: 2^32 = t * d + rest + 1.

@@ -31,10 +31,11 @@ pub(crate) const HARD_FLOAT: bool = !cfg!(target_arch = "arm") || cfg!(target_ab
 /// `a * b` as `i64`, exactly. Where the core has a 32×32→64-bit multiply
 /// (every target but ARMv6-M) this is that one instruction. ARMv6-M has
 /// only the low 32 bits of a product, and the compiler calls a 64×64-bit
-/// library routine for it; four 16×16-bit products are cheaper there.
-/// Used where it measured faster on the M0+ (edge setup and the triangle's
-/// area: 0.8% of `torus.babylon`); in the planes' range checks, inlined
-/// many times over, it was slower than the library call.
+/// library routine for it (some 40 instructions with the call); four
+/// 16×16-bit products, about 20, are cheaper there. Used in the integer
+/// vertex stage, triangle setup and the fixed-point span loops' products;
+/// in the planes' range checks, inlined many times over, it measured
+/// slower than the library call.
 #[inline(always)]
 pub(crate) fn mul_wide(a: i32, b: i32) -> i64 {
     if cfg!(soft3d_armv6m) {
