@@ -30,14 +30,14 @@ impl Fixed {
     }
 
     /// Nearest representable value; saturates, NaN gives zero.
-    #[inline]
+    #[inline(always)]
     pub fn from_f32(v: f32) -> Self {
         if super::HARD_FLOAT {
             // `as` saturates and maps NaN to 0.
             let scaled = v * (1u32 << Self::FRAC_BITS) as f32;
             Self((scaled + if scaled < 0.0 { -0.5 } else { 0.5 }) as i32)
         } else {
-            Self(scaled_from_bits(v, Self::FRAC_BITS as i32, true))
+            Self(rounded_from_bits(v, Self::FRAC_BITS as i32))
         }
     }
 
@@ -55,7 +55,7 @@ impl Fixed {
         if super::HARD_FLOAT {
             (v * (1u64 << k) as f32) as i32
         } else {
-            scaled_from_bits(v, k, false)
+            truncated_from_bits(v, k)
         }
     }
 
@@ -155,17 +155,46 @@ const RSQRT_TABLE: [u32; 96] = {
     t
 };
 
-/// `v * 2^k` converted to `i32` from the bits of `v`, with no float
-/// operation: for a core without an FPU, where the multiply, the rounding
-/// add and the saturating conversion of the float formulas are a library
-/// call each (the conversion four: three comparisons and the conversion).
-/// Gives exactly what the float formulas give: truncated toward zero
-/// (`round == false`, like `(v * 2^k) as i32`), or rounded half away from
-/// zero through an `f32` addition (`round == true`, like
-/// `(v * 2^k ± 0.5) as i32`, whose addition rounds ties to even once the
-/// product reaches 2^23). Saturating; NaN gives zero. For `0 <= k <= 32`.
+/// `(v * 2^k) as i32` from the bits of `v`, with no float operation:
+/// for a core without an FPU, where the multiply and the saturating
+/// conversion are a library call each (the conversion four: three
+/// comparisons and the conversion). Truncated toward zero, saturating,
+/// NaN giving zero, for `0 <= k <= 32`. The common case (a value within
+/// the range) takes one branch and no test for NaN.
 #[inline]
-fn scaled_from_bits(v: f32, k: i32, round: bool) -> i32 {
+fn truncated_from_bits(v: f32, k: i32) -> i32 {
+    let bits = v.to_bits();
+    // |v * 2^k| = mantissa * 2^shift. Zero and subnormals give a shift
+    // far below -24 (they convert to 0), infinity and NaN one above 8.
+    let shift = (bits << 1 >> 24) as i32 - 150 + k;
+    let mantissa = (bits & 0x7F_FFFF) | 0x80_0000;
+    let magnitude = if shift < 0 {
+        if shift >= -24 {
+            mantissa >> -shift
+        } else {
+            0
+        }
+    } else if shift < 8 {
+        mantissa << shift
+    } else if bits << 1 > 0xFF00_0000 {
+        return 0;
+    } else {
+        // 2^31 or more (infinity included): saturated.
+        return if (bits as i32) < 0 { i32::MIN } else { i32::MAX };
+    };
+    if (bits as i32) < 0 {
+        (magnitude as i32).wrapping_neg()
+    } else {
+        magnitude as i32
+    }
+}
+
+/// `(v * 2^k ± 0.5) as i32` from the bits of `v` (see
+/// [`truncated_from_bits`]): rounded half away from zero through an `f32`
+/// addition, which rounds ties to even once the product reaches 2^23.
+/// Saturating; NaN gives zero. For `0 <= k <= 32`.
+#[inline(always)]
+fn rounded_from_bits(v: f32, k: i32) -> i32 {
     let bits = v.to_bits();
     let negative = bits >> 31 != 0;
     let exponent = ((bits >> 23) & 0xFF) as i32;
@@ -185,12 +214,6 @@ fn scaled_from_bits(v: f32, k: i32, round: bool) -> i32 {
     } else if shift > 0 {
         // An integer whose ulp is 2 or more: adding 0.5 rounds back to it.
         mantissa << shift
-    } else if !round {
-        if shift >= -24 {
-            mantissa >> -shift
-        } else {
-            0
-        }
     } else if shift >= -25 {
         // `x + 0.5` in units of 2^shift is `mantissa + 2^(s-1)` (below
         // 2^26), which the addition rounds to 24 significant bits, ties to
@@ -312,8 +335,12 @@ mod tests {
         let float_trunc = |v: f32| (v * 65536.0) as i32;
         let check = |bits: u32| {
             let v = f32::from_bits(bits);
-            assert_eq!(scaled_from_bits(v, 16, true), float_round(v), "round {v:e} ({bits:#x})");
-            assert_eq!(scaled_from_bits(v, 16, false), float_trunc(v), "truncate {v:e} ({bits:#x})");
+            assert_eq!(rounded_from_bits(v, 16), float_round(v), "round {v:e} ({bits:#x})");
+            assert_eq!(truncated_from_bits(v, 16), float_trunc(v), "truncate {v:e} ({bits:#x})");
+            // Truncation serves other scales too (lighting's 2^30).
+            for k in [0, 1, 15, 17, 30, 31, 32] {
+                assert_eq!(truncated_from_bits(v, k), (v * (1u64 << k) as f32) as i32, "truncate {v:e} ({bits:#x}) at 2^{k}");
+            }
         };
         // Every exponent with a spread of mantissas (the low bits odd and
         // even), both signs, and the values around each rounding boundary.

@@ -402,6 +402,10 @@ fn max_by_17_bits(d: u32) -> (u32, u32) {
     // (d < 2^17), wrapping, it comes out exact.
     let rest = (u32::MAX.wrapping_sub(t.wrapping_mul(d))) as i32;
     let d = d as i32;
+    // The step lands at or below the quotient for every d (the exhaustive
+    // test never takes the first branch), but without that branch the
+    // compiler's code for the span loop is longer: wall-tex fixed on the
+    // M0+ measured +2.2%.
     let (t, rest) = if rest < 0 {
         (t - 1, rest + d)
     } else if rest >= d {
