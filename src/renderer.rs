@@ -717,12 +717,19 @@ where
         let (vs, bits) = (&*b.vertices, S::SUBPIXEL_BITS);
         let strips = height.div_ceil(strip_rows);
         // Bin by first strip; pushing in reverse keeps each list in
-        // submission order.
+        // submission order. Strips of a power of two rows (the usual) take
+        // a shift: without a divide instruction (ARMv6-M) a division is a
+        // library call per triangle.
+        let strip_shift = strip_rows.is_power_of_two().then(|| strip_rows.trailing_zeros());
         b.heads[..strips].fill(NONE);
         for i in (0..tris.len()).rev() {
             let v = tris[i].v;
             let top = vs[v[0] as usize].y.min(vs[v[1] as usize].y).min(vs[v[2] as usize].y);
-            let s = first_row_at_or_below(top, bits).clamp(0, height as i32 - 1) as usize / strip_rows;
+            let row = first_row_at_or_below(top, bits).clamp(0, height as i32 - 1) as usize;
+            let s = match strip_shift {
+                Some(k) => row >> k,
+                None => row / strip_rows,
+            };
             tris[i].next = b.heads[s];
             b.heads[s] = i as u16;
         }

@@ -115,7 +115,9 @@ impl<'a> Vectors<'a> {
     }
 
     /// Vector `i` (zero past the end), dequantized if stored as `i16`.
-    #[inline]
+    /// Always inlined: a call is not removed where the vector goes unused
+    /// (the normal and position of a vertex lit in integers).
+    #[inline(always)]
     pub const fn get(&self, i: usize) -> Vec3 {
         match self {
             Vectors::F32(v) => {
