@@ -171,7 +171,10 @@ fn div_ceil_rem(m: i64, d: i32) -> (i32, i32) {
 fn edge_start(from: i32, dx: i32, dy: i32, t: i32, f: u32, split: bool) -> (i32, i32) {
     let d = dy << f;
     if split {
-        let (run, err) = div_ceil_rem(((from & ((1 << f) - 1)) * dy) as i64 + mul_wide(dx, t), d);
+        // A small triangle's run is a single multiply (t >= 0: the row is
+        // at or below the vertex), not a product by halves.
+        let run = if (dx.unsigned_abs() | t as u32) < 1 << 15 { (dx * t) as i64 } else { mul_wide(dx, t) };
+        let (run, err) = div_ceil_rem(((from & ((1 << f) - 1)) * dy) as i64 + run, d);
         ((from >> f) + run, err)
     } else {
         div_ceil_rem(mul_wide(from, dy) + mul_wide(dx, t), d)
