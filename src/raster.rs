@@ -119,8 +119,18 @@ fn floor_f32(v: f32) -> f32 {
 pub fn signed_area2<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c: &ScreenVertex<V>) -> i64 {
     // Snapped coordinates are within ±2^28, so differences fit i32 and
     // each product is one 32×32→64 multiply.
-    let (bx, by) = (b.x - a.x, b.y - a.y);
-    let (cx, cy) = (c.x - a.x, c.y - a.y);
+    cross(b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y, cfg!(soft3d_armv6m))
+}
+
+/// `bx cy - by cx`. With `short` (where there is no long multiply:
+/// ARMv6-M), offsets below 2^15 units (a triangle on screen, at up to 5
+/// sub-pixel bits) take two 32-bit products: each below 2^30, their
+/// difference below 2^31.
+#[inline(always)]
+fn cross(bx: i32, by: i32, cx: i32, cy: i32, short: bool) -> i64 {
+    if short && (bx.unsigned_abs() | by.unsigned_abs() | cx.unsigned_abs() | cy.unsigned_abs()) < 1 << 15 {
+        return (bx * cy - by * cx) as i64;
+    }
     mul_wide(bx, cy) - mul_wide(by, cx)
 }
 
@@ -972,6 +982,24 @@ mod tests {
                 w.step();
             }
         }
+    }
+
+    #[test]
+    fn areas_short_or_wide_are_exact() {
+        // Offsets around the short products' limit and up to the guard
+        // band, against i128.
+        let mut next = crate::math::xorshift(0x2545_F491);
+        for case in 0..200_000u32 {
+            let reach = 1u32 << (1 + case % 29);
+            let mut offset = || (next() % (2 * reach)) as i32 - reach as i32;
+            let (bx, by, cx, cy) = (offset(), offset(), offset(), offset());
+            let want = bx as i128 * cy as i128 - by as i128 * cx as i128;
+            for short in [false, true] {
+                assert_eq!(cross(bx, by, cx, cy, short) as i128, want, "{bx} {by} {cx} {cy} short {short}");
+            }
+        }
+        let edge = (1 << 15) - 1;
+        assert_eq!(cross(edge, -edge, -edge, edge, true), cross(edge, -edge, -edge, edge, false));
     }
 
     #[test]

@@ -61,6 +61,13 @@ pub(crate) fn dot_wide(a: i32, b: i32, c: i32, d: i32) -> i64 {
 
 #[inline(never)]
 fn dot_by_halves(a: i32, b: i32, c: i32, d: i32) -> i64 {
+    if (b.unsigned_abs() | d.unsigned_abs()) < 1 << 15 {
+        // Short second factors (a small triangle's offsets): a = ah 2^16
+        // + al, and each of ah b, al b fits 32 bits (|ah|, |b| <= 2^15,
+        // al < 2^16): two products each, not four.
+        let (ah, al, ch, cl) = (a >> 16, a & 0xFFFF, c >> 16, c & 0xFFFF);
+        return (((ah * b) as i64 + (ch * d) as i64) << 16) + (al * b) as i64 + (cl * d) as i64;
+    }
     mul_wide_by_halves(a, b) + mul_wide_by_halves(c, d)
 }
 
@@ -291,6 +298,18 @@ mod tests {
             assert_eq!(mul_wide_unsigned_by_halves(a, b), a as u64 * b as u64, "{a} * {b}");
         }
         assert_eq!(mul_wide_unsigned_by_halves(u32::MAX, u32::MAX), u32::MAX as u64 * u32::MAX as u64);
+        // Sums of two, with second factors short (below 2^15) or not.
+        let extremes = [i32::MIN, i32::MAX, -(1 << 15), (1 << 15) - 1, 1 << 15, 0, -1];
+        for &a in &extremes {
+            for &b in &extremes {
+                assert_eq!(dot_by_halves(a, b, 3, b), a as i64 * b as i64 + 3 * b as i64, "{a} * {b} + 3 * {b}");
+            }
+        }
+        for _ in 0..100_000 {
+            let (a, c) = (next() as i32, next() as i32);
+            let (b, d) = (next() as i32 >> (next() % 32), next() as i32 >> (next() % 32));
+            assert_eq!(dot_by_halves(a, b, c, d), a as i64 * b as i64 + c as i64 * d as i64, "{a} * {b} + {c} * {d}");
+        }
     }
 
     #[test]
