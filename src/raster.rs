@@ -22,7 +22,7 @@
 
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
-use crate::math::{div_floor_small, mul_wide, Interp};
+use crate::math::{all_short, div_floor_small, mul_wide, Interp};
 use crate::settings::DepthFormat;
 
 /// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
@@ -123,12 +123,13 @@ pub fn signed_area2<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c:
 }
 
 /// `bx cy - by cx`. With `short` (where there is no long multiply:
-/// ARMv6-M), offsets below 2^15 units (a triangle on screen, at up to 5
-/// sub-pixel bits) take two 32-bit products: each below 2^30, their
-/// difference below 2^31.
+/// ARMv6-M), offsets in `[-2^15, 2^15)` units (a triangle on screen, at up
+/// to 5 sub-pixel bits) take two 32-bit products: each at most 2^30 in
+/// magnitude, and of opposite signs at most 2^30 - 2^15, so that their
+/// difference fits.
 #[inline(always)]
 fn cross(bx: i32, by: i32, cx: i32, cy: i32, short: bool) -> i64 {
-    if short && (bx.unsigned_abs() | by.unsigned_abs() | cx.unsigned_abs() | cy.unsigned_abs()) < 1 << 15 {
+    if short && all_short([bx, by, cx, cy]) {
         return (bx * cy - by * cx) as i64;
     }
     mul_wide(bx, cy) - mul_wide(by, cx)
@@ -183,7 +184,7 @@ fn edge_start(from: i32, dx: i32, dy: i32, t: i32, f: u32, split: bool) -> (i32,
     if split {
         // A small triangle's run is a single multiply (t >= 0: the row is
         // at or below the vertex), not a product by halves.
-        let run = if (dx.unsigned_abs() | t as u32) < 1 << 15 { (dx * t) as i64 } else { mul_wide(dx, t) };
+        let run = if all_short([dx, t]) { (dx * t) as i64 } else { mul_wide(dx, t) };
         let (run, err) = div_ceil_rem(((from & ((1 << f) - 1)) * dy) as i64 + run, d);
         ((from >> f) + run, err)
     } else {
@@ -998,8 +999,10 @@ mod tests {
                 assert_eq!(cross(bx, by, cx, cy, short) as i128, want, "{bx} {by} {cx} {cy} short {short}");
             }
         }
-        let edge = (1 << 15) - 1;
-        assert_eq!(cross(edge, -edge, -edge, edge, true), cross(edge, -edge, -edge, edge, false));
+        // The largest difference of short products: 2^31 - 2^15.
+        let (lo, hi) = (-(1 << 15), (1 << 15) - 1);
+        assert_eq!(cross(lo, lo, hi, lo, true), (1i64 << 31) - (1 << 15));
+        assert_eq!(cross(lo, lo, lo, hi, true), -(1i64 << 31) + (1 << 15));
     }
 
     #[test]

@@ -59,9 +59,16 @@ pub(crate) fn dot_wide(a: i32, b: i32, c: i32, d: i32) -> i64 {
     }
 }
 
+/// Whether every value is in `[-2^15, 2^15)`: one addition each and one
+/// compare (cheaper than absolute values on ARMv6-M).
+#[inline(always)]
+pub(crate) fn all_short<const N: usize>(values: [i32; N]) -> bool {
+    values.iter().fold(0, |bits, &v| bits | v.wrapping_add(1 << 15) as u32) < 1 << 16
+}
+
 #[inline(never)]
 fn dot_by_halves(a: i32, b: i32, c: i32, d: i32) -> i64 {
-    if (b.unsigned_abs() | d.unsigned_abs()) < 1 << 15 {
+    if all_short([b, d]) {
         // Short second factors (a small triangle's offsets): a = ah 2^16
         // + al, and each of ah b, al b fits 32 bits (|ah|, |b| <= 2^15,
         // al < 2^16): two products each, not four.
@@ -309,6 +316,14 @@ mod tests {
             let (a, c) = (next() as i32, next() as i32);
             let (b, d) = (next() as i32 >> (next() % 32), next() as i32 >> (next() % 32));
             assert_eq!(dot_by_halves(a, b, c, d), a as i64 * b as i64 + c as i64 * d as i64, "{a} * {b} + {c} * {d}");
+        }
+    }
+
+    #[test]
+    fn short_values_are_those_of_16_bits() {
+        for v in [i32::MIN, -(1 << 15) - 1, -(1 << 15), -1, 0, (1 << 15) - 1, 1 << 15, i32::MAX] {
+            assert_eq!(all_short([v]), i16::try_from(v).is_ok(), "{v}");
+            assert_eq!(all_short([0, v, 5]), i16::try_from(v).is_ok(), "{v}");
         }
     }
 
