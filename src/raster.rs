@@ -123,9 +123,9 @@ pub fn signed_area2<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, c:
 }
 
 /// `bx cy - by cx`. With `short` (where there is no long multiply:
-/// ARMv6-M), offsets in `[-2^15, 2^15)` units (a triangle on screen, at up
-/// to 5 sub-pixel bits) take two 32-bit products: each at most 2^30 in
-/// magnitude, and of opposite signs at most 2^30 - 2^15, so that their
+/// ARMv6-M), offsets in `[-2^15, 2^15)` units (below 256 pixels at the
+/// default 6 sub-pixel bits) take two 32-bit products: each at most 2^30
+/// in magnitude, and of opposite signs at most 2^30 - 2^15, so that their
 /// difference fits.
 #[inline(always)]
 fn cross(bx: i32, by: i32, cx: i32, cy: i32, short: bool) -> i64 {
@@ -721,13 +721,12 @@ fn range_in<S: Interp>((lo, hi): (f32, f32)) -> (S, S) {
 }
 
 /// Range `i` of an effect's `ranges` in the stepping scalar. The ranges
-/// are the effect's constants, and by a match on `i` each arm converts a
-/// constant, which folds away: indexed by `i`, every plane of every
-/// triangle converted its range (in software on an M0+, 6% of
-/// `torus.babylon` in fixed point).
+/// are the effect's constants, and by a match on `i` the first three
+/// arms (a color's channels) each convert a constant, which folds away:
+/// indexed by `i`, every plane of every triangle converted its range (in
+/// software on an M0+, 5% of `torus.babylon` in fixed point).
 #[inline(always)]
 fn range_at<S: Interp>(ranges: &[(f32, f32); MAX_VARYINGS], i: usize) -> (S, S) {
-    const _: () = assert!(MAX_VARYINGS == 8);
     match i {
         0 => range_in(ranges[0]),
         1 => range_in(ranges[1]),

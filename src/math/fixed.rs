@@ -30,7 +30,7 @@ impl Fixed {
     }
 
     /// Nearest representable value; saturates, NaN gives zero.
-    #[inline(always)]
+    #[inline]
     pub fn from_f32(v: f32) -> Self {
         if super::HARD_FLOAT {
             // `as` saturates and maps NaN to 0.
@@ -193,7 +193,7 @@ fn truncated_from_bits(v: f32, k: i32) -> i32 {
 /// [`truncated_from_bits`]): rounded half away from zero through an `f32`
 /// addition, which rounds ties to even once the product reaches 2^23.
 /// Saturating; NaN gives zero. For `0 <= k <= 32`.
-#[inline(always)]
+#[inline]
 fn rounded_from_bits(v: f32, k: i32) -> i32 {
     let bits = v.to_bits();
     let negative = bits >> 31 != 0;
