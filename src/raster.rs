@@ -495,7 +495,7 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     // stepping gives). Rows count from the triangle's first row, not the
     // strip's, so `f32` rounding is the same whatever the strip height.
     let min_x = a.x.min(b.x).min(c.x);
-    let x_base = (min_x >> f).clamp(0, width - 1);
+    let x_base = (min_x >> f).max(0).min(width - 1);
     let (ox, oy) = ((x_base << f) + (1 << (f - 1)) - a.x, (y_top << f) + (1 << (f - 1)) - a.y);
     let z0 = z.at(ox, oy, f);
     let q0 = q.at(ox, oy, f);
@@ -617,8 +617,8 @@ impl<'t, const V: usize> Rows<'t, V> {
                 self.short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, self.f);
             }
             let (left, right) = if self.t.mid_left { (&self.short, &self.long) } else { (&self.long, &self.short) };
-            let x0 = left.bound.clamp(0, self.width);
-            let x1 = right.bound.clamp(0, self.width);
+            let x0 = left.bound.max(0).min(self.width);
+            let x1 = right.bound.max(0).min(self.width);
             self.long.step();
             self.short.step();
             self.y += 1;

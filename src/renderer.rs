@@ -689,8 +689,8 @@ where
             return Ok(());
         }
         let bits = S::SUBPIXEL_BITS;
-        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).clamp(0, self.b.height as i32);
-        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).clamp(0, self.b.height as i32);
+        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).max(0).min(self.b.height as i32);
+        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).max(0).min(self.b.height as i32);
         // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
         let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
         let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
@@ -725,7 +725,7 @@ where
         for i in (0..tris.len()).rev() {
             let v = tris[i].v;
             let top = vs[v[0] as usize].y.min(vs[v[1] as usize].y).min(vs[v[2] as usize].y);
-            let row = first_row_at_or_below(top, bits).clamp(0, height as i32 - 1) as usize;
+            let row = first_row_at_or_below(top, bits).max(0).min(height as i32 - 1) as usize;
             let s = match strip_shift {
                 Some(k) => row >> k,
                 None => row / strip_rows,

@@ -520,7 +520,7 @@ impl Interp for Fixed {
         // The product clamped once, in 64 bits: saturating it to 32 bits
         // first would change nothing, `[lo, hi]` being inside.
         let p = mul_wide(self.to_bits(), o.to_bits()) >> Fixed::FRAC_BITS;
-        Fixed::from_bits(p.clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
+        Fixed::from_bits(p.max(lo.to_bits() as i64).min(hi.to_bits() as i64) as i32)
     }
     #[inline(always)]
     fn q_recip(self) -> Self {
@@ -558,7 +558,7 @@ impl Interp for Fixed {
     }
     #[inline]
     fn clamp_between(self, lo: Self, hi: Self) -> Self {
-        self.clamp(lo, hi)
+        self.max(lo).min(hi)
     }
     #[inline(always)]
     fn channel(self) -> u8 {
@@ -603,7 +603,7 @@ impl Interp for Fixed {
     #[inline]
     #[allow(clippy::too_many_arguments)]
     fn plane_clamped(value0: Self, dx: Self, dy: Self, ox: i32, oy: i32, f: u32, lo: Self, hi: Self) -> Self {
-        Fixed::from_bits(Self::plane_exact(value0, dx, dy, ox, oy, f).clamp(lo.to_bits() as i64, hi.to_bits() as i64) as i32)
+        Fixed::from_bits(Self::plane_exact(value0, dx, dy, ox, oy, f).max(lo.to_bits() as i64).min(hi.to_bits() as i64) as i32)
     }
 }
 

@@ -167,7 +167,7 @@ impl Wrap for Clamp {
     const PERIODIC: bool = false;
     #[inline(always)]
     fn apply(t: i32, size_log2: u32) -> i32 {
-        t.clamp(0, (1 << size_log2) - 1)
+        t.max(0).min((1 << size_log2) - 1)
     }
 }
 
