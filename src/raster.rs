@@ -684,7 +684,9 @@ impl<const V: usize> VertexValues<V> {
         // Perspective-correct varyings are interpolated as value * q', with
         // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
         let q = if P::CORRECT {
-            let qmax = a.q.max(b.q).max(c.q);
+            // Plain compares: `f32::max` is a library call on the M4F.
+            let qmax = if b.q > a.q { b.q } else { a.q };
+            let qmax = if c.q > qmax { c.q } else { qmax };
             let k = if qmax > 0.0 { 1.0 / qmax } else { 1.0 };
             (a.q * k, b.q * k, c.q * k)
         } else {
