@@ -22,7 +22,7 @@
 
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
-use crate::math::{all_short, div_floor_small, mul_wide, Interp};
+use crate::math::{all_short, all_within, div_floor_small, mul_wide, Interp};
 use crate::settings::DepthFormat;
 
 /// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
@@ -391,7 +391,7 @@ struct Shape<S: Interp> {
     oy2: i32,
     /// What turns value differences into gradients.
     basis: S::Basis,
-    /// Whether an offset exceeds 2^16 pixels: then gradients are computed
+    /// Whether an offset reaches 2^16 pixels: then gradients are computed
     /// in `f64` (see [`Plane::far`]).
     far: bool,
     /// Units per pixel, `2^f`.
@@ -405,7 +405,7 @@ impl<S: Interp> Shape<S> {
         let (a, b, c) = (t.a, t.b, t.c);
         // Snapped coordinates are within ±2^29, so their differences fit i32.
         let (ox1, oy1, ox2, oy2) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
-        let far = ox1.unsigned_abs().max(oy1.unsigned_abs()).max(ox2.unsigned_abs()).max(oy2.unsigned_abs()) >> f > 1 << 16;
+        let far = !all_within([ox1, oy1, ox2, oy2], 16 + f);
         let basis = S::basis([ox1, oy1, ox2, oy2], t.area2, f);
         Shape { ox1, oy1, ox2, oy2, basis, far, per_pixel: 1 << f }
     }

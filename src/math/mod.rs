@@ -59,11 +59,17 @@ pub(crate) fn dot_wide(a: i32, b: i32, c: i32, d: i32) -> i64 {
     }
 }
 
-/// Whether every value is in `[-2^15, 2^15)`: one addition each and one
-/// compare (cheaper than absolute values on ARMv6-M).
+/// Whether every value is in `[-2^15, 2^15)` (see [`all_within`]).
 #[inline(always)]
 pub(crate) fn all_short<const N: usize>(values: [i32; N]) -> bool {
-    values.iter().fold(0, |bits, &v| bits | v.wrapping_add(1 << 15) as u32) < 1 << 16
+    all_within(values, 15)
+}
+
+/// Whether every value is in `[-2^k, 2^k)`, `k < 31`: one addition each
+/// and one compare (cheaper than absolute values and their maximum).
+#[inline(always)]
+pub(crate) fn all_within<const N: usize>(values: [i32; N], k: u32) -> bool {
+    values.iter().fold(0, |bits, &v| bits | v.wrapping_add(1 << k) as u32) < 2 << k
 }
 
 #[inline(never)]
@@ -324,6 +330,14 @@ mod tests {
         for v in [i32::MIN, -(1 << 15) - 1, -(1 << 15), -1, 0, (1 << 15) - 1, 1 << 15, i32::MAX] {
             assert_eq!(all_short([v]), i16::try_from(v).is_ok(), "{v}");
             assert_eq!(all_short([0, v, 5]), i16::try_from(v).is_ok(), "{v}");
+        }
+        for k in [0, 12, 23, 30] {
+            let (lo, hi) = (-(1i64 << k), 1i64 << k);
+            for v in [i32::MIN as i64, lo - 1, lo, -1, 0, hi - 1, hi, i32::MAX as i64] {
+                let inside = (lo..hi).contains(&v);
+                assert_eq!(all_within([v as i32], k), inside, "{v} within 2^{k}");
+                assert_eq!(all_within([-1, v as i32, 0], k), inside, "{v} within 2^{k}");
+            }
         }
     }
 
