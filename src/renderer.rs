@@ -754,19 +754,24 @@ where
             };
             let (mut fresh, mut old) = (b.heads[s], carried);
             let (mut next_head, mut next_tail) = (NONE, NONE);
+            // The draw call of triangle `i`, and where the next one starts.
             let mut draw = 0;
-            // Merge the two lists by index, i.e. in submission order.
-            while fresh != NONE || old != NONE {
-                let take_fresh = old == NONE || (fresh != NONE && fresh < old);
-                let i = if take_fresh { fresh } else { old };
-                let rec = tris[i as usize];
-                if take_fresh {
+            let mut next_draw = draws.get(1).map_or(NONE, |d| d.1);
+            // Merge the two lists by index, i.e. in submission order (an
+            // empty list's head, NONE, is above every index).
+            loop {
+                let i = fresh.min(old);
+                let Some(&rec) = tris.get(i as usize) else {
+                    break;
+                };
+                if i == fresh {
                     fresh = rec.next;
                 } else {
                     old = rec.next;
                 }
-                while draw + 1 < draws.len() && draws[draw + 1].1 <= i {
+                while i >= next_draw {
                     draw += 1;
+                    next_draw = draws.get(draw + 1).map_or(NONE, |d| d.1);
                 }
                 let vs = &b.vertices;
                 let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
