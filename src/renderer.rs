@@ -585,11 +585,13 @@ where
     ) -> Result<(), DrawError> {
         self.stats.triangles += 1;
         let vs = &self.b.vertices;
-        let fl =
-            [vertex::flags(&vs[corners[0] as usize]), vertex::flags(&vs[corners[1] as usize]), vertex::flags(&vs[corners[2] as usize])];
-        if fl[0] | fl[1] | fl[2] == 0 {
+        let v = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];
+        // The common case by three compares; flags are read only if a
+        // corner has none.
+        if v.iter().all(|v| v.x != vertex::UNPROJECTED) {
             return self.emit(corners, face, cull);
         }
+        let fl = v.map(vertex::flags);
         if fl.iter().any(|f| f & vertex::NOT_FINITE != 0) {
             self.stats.invalid += 1;
             return Ok(());
