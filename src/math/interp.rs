@@ -364,8 +364,10 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn depth16(self) -> u16 {
-        // Through u32, as `channel`.
-        (self as u32).min(65535) as u16
+        // Through i32 (one instruction, saturating, NaN to 0), then
+        // clamped: with DSP instructions (Cortex-M4F) one `usat`, where
+        // `min` on the u32 needed a compare and the constant's register.
+        (self as i32).max(0).min(65535) as u16
     }
     #[inline(always)]
     fn depth32(self) -> u32 {
