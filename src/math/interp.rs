@@ -364,10 +364,16 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn depth16(self) -> u16 {
-        // Through i32 (one instruction, saturating, NaN to 0), then
-        // clamped: with DSP instructions (Cortex-M4F) one `usat`, where
-        // `min` on the u32 needed a compare and the constant's register.
-        (self as i32).max(0).min(65535) as u16
+        // With an FPU through i32 (one instruction, saturating, NaN to 0),
+        // then clamped: with DSP instructions (Cortex-M4F) one `usat`,
+        // where `min` on a u32 needed a compare and the constant's
+        // register. Without, through u32: in software the conversion to
+        // i32 tests more bounds (wall-flat f32 on the M0+ 15% slower).
+        if super::HARD_FLOAT {
+            (self as i32).max(0).min(65535) as u16
+        } else {
+            (self as u32).min(65535) as u16
+        }
     }
     #[inline(always)]
     fn depth32(self) -> u32 {
