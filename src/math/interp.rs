@@ -370,7 +370,7 @@ impl Interp for f32 {
         // register. Without, through u32: in software the conversion to
         // i32 tests more bounds (wall-flat f32 on the M0+ 15% slower).
         if super::HARD_FLOAT {
-            (self as i32).max(0).min(65535) as u16
+            (self as i32).clamp(0, 65535) as u16
         } else {
             (self as u32).min(65535) as u16
         }
@@ -753,7 +753,7 @@ mod tests {
         for v in specials.into_iter().chain(sweep) {
             // Channels: as `as u8` below 256 (NaN and negatives give 0);
             // callers keep them there, and beyond they may wrap.
-            if !(v >= 256.0) {
+            if v.is_nan() || v < 256.0 {
                 assert_eq!(Interp::channel(v), v as u8, "{v:e}");
             }
             assert_eq!(Interp::depth16(v), v as u16, "{v:e}");
