@@ -635,6 +635,8 @@ impl<'t, const V: usize> Rows<'t, V> {
                 self.short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, self.f);
             }
             let (left, right) = if self.t.mid_left { (&self.short, &self.long) } else { (&self.long, &self.short) };
+            // `max` and `min`, not `clamp`: with bounds known only at run
+            // time, `clamp` asserts at every call that they are ordered.
             let x0 = left.bound.max(0).min(self.width);
             let x1 = right.bound.max(0).min(self.width);
             self.long.step();

@@ -567,6 +567,8 @@ impl Interp for Fixed {
     }
     #[inline]
     fn clamp_between(self, lo: Self, hi: Self) -> Self {
+        // Not `clamp`, which asserts `lo <= hi` at every call (callers
+        // keep them ordered).
         self.max(lo).min(hi)
     }
     #[inline(always)]
