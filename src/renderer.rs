@@ -388,7 +388,8 @@ where
 
     /// Statistics so far.
     pub fn stats(&self) -> FrameStats {
-        self.stats
+        // `queued` is the record count: kept there, not counted per triangle.
+        FrameStats { queued: self.n_triangles as u32, ..self.stats }
     }
 
     /// Draws `mesh` placed by `model` with `material`.
@@ -474,6 +475,9 @@ where
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
         let (p, idx) = (|i: usize| mesh.position(i), mesh.indices());
+        // Counted once here, not per triangle in `assemble` (a store per
+        // triangle in the hot loop).
+        self.stats.triangles += (idx.len() / 3) as u32;
         for t in idx.chunks_exact(3) {
             let local = [t[0] as usize, t[1] as usize, t[2] as usize];
             let corners = [(base + local[0]) as u16, (base + local[1]) as u16, (base + local[2]) as u16];
@@ -583,7 +587,6 @@ where
         perspective: bool,
         clip_vertex: impl Fn(usize) -> ClipVertex<V>,
     ) -> Result<(), DrawError> {
-        self.stats.triangles += 1;
         let vs = &self.b.vertices;
         let v = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];
         // The common case by three compares; flags are read only if a
@@ -707,13 +710,13 @@ where
         let capacity = self.b.triangles.len();
         *self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })? = rec;
         self.n_triangles += 1;
-        self.stats.queued += 1;
         Ok(())
     }
 
     /// Rasterizes the frame strip by strip into `target`.
     pub fn finish<T: DrawTarget<Color = C>>(self, target: &mut T) -> Result<FrameStats, T::Error> {
-        let Frame { b, n_triangles, draws, background, stats, .. } = self;
+        let stats = self.stats();
+        let Frame { b, n_triangles, draws, background, .. } = self;
         let (width, height, strip_rows) = (b.width, b.height, b.strip);
         let tris = &mut b.triangles[..n_triangles];
         let (vs, bits) = (&*b.vertices, S::SUBPIXEL_BITS);
