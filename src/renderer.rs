@@ -50,6 +50,8 @@ const NONE: u16 = u16::MAX;
 #[derive(Clone, Copy, Debug)]
 struct TriRecord {
     v: [u16; 3],
+    /// Until `finish` bins the triangle, the first strip it covers (found
+    /// when it was queued); then the next triangle of its strip's list.
     next: u16,
     face: [u8; 3],
 }
@@ -706,7 +708,12 @@ where
             self.stats.off_screen += 1;
             return Ok(());
         }
-        let rec = TriRecord { v: corners, next: NONE, face: [face.r(), face.g(), face.b()] };
+        // `first < end <= height`: a row of the frame. Strips of a power
+        // of two rows (the usual) take a shift: without a divide
+        // instruction (ARMv6-M) a division is a library call.
+        let strip = self.b.strip;
+        let s = if strip.is_power_of_two() { first as usize >> strip.trailing_zeros() } else { first as usize / strip };
+        let rec = TriRecord { v: corners, next: s as u16, face: [face.r(), face.g(), face.b()] };
         let capacity = self.b.triangles.len();
         *self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })? = rec;
         self.n_triangles += 1;
@@ -719,22 +726,13 @@ where
         let Frame { b, n_triangles, draws, background, .. } = self;
         let (width, height, strip_rows) = (b.width, b.height, b.strip);
         let tris = &mut b.triangles[..n_triangles];
-        let (vs, bits) = (&*b.vertices, S::SUBPIXEL_BITS);
+        let bits = S::SUBPIXEL_BITS;
         let strips = height.div_ceil(strip_rows);
         // Bin by first strip; pushing in reverse keeps each list in
-        // submission order. Strips of a power of two rows (the usual) take
-        // a shift: without a divide instruction (ARMv6-M) a division is a
-        // library call per triangle.
-        let strip_shift = strip_rows.is_power_of_two().then(|| strip_rows.trailing_zeros());
+        // submission order.
         b.heads[..strips].fill(NONE);
         for i in (0..tris.len()).rev() {
-            let v = tris[i].v;
-            let top = vs[v[0] as usize].y.min(vs[v[1] as usize].y).min(vs[v[2] as usize].y);
-            let row = first_row_at_or_below(top, bits).max(0).min(height as i32 - 1) as usize;
-            let s = match strip_shift {
-                Some(k) => row >> k,
-                None => row / strip_rows,
-            };
+            let s = tris[i].next as usize;
             tris[i].next = b.heads[s];
             b.heads[s] = i as u16;
         }
