@@ -446,7 +446,10 @@ impl<const V: usize> Sorted<'_, V> {
 /// once, planes set up in `S` and stepped with additions. A triangle whose stepped
 /// values could leave their ranges (a wrapping scalar's rounding, or a
 /// triangle reaching toward the guard band) takes `rasterize_careful`.
-#[inline(never)]
+///
+/// Inlined into its one caller, the material's dynamically dispatched
+/// program: that call is then the only one per triangle.
+#[inline(always)]
 pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     target: &mut StripTarget<'_, C, Z::Value>,
     effect: &E,
