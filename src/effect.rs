@@ -167,7 +167,7 @@ pub(crate) fn vertex_varyings<C: Color, E: Effect, const V: usize>(effect: &E, i
 /// [`VertexInput::lit`].
 #[inline(always)]
 pub(crate) fn lit_by(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
-    lit(lights.diffuse(position, normal), color)
+    lit(lights.diffuse(position, normal), color, !lights.in_unit_range())
 }
 
 /// [`VertexInput::lit`] for effect `E` and display color `C`, in `f32`.
@@ -177,10 +177,12 @@ pub(crate) fn lit_input<C: Color, E: Effect>(lights: &Lighting, position: Vec3, 
     [l[0] * s[0] + 0.5, l[1] * s[1] + 0.5, l[2] * s[2] + 0.5]
 }
 
-/// Light times color, per channel, clamped to [0, 255].
+/// Light times color, per channel, in [0, 255]: the light is clamped to
+/// [0, 1] unless the lights keep it there (`clamp` false, the usual: a
+/// lit vertex then skips three clamps).
 #[inline]
-fn lit(light: Vec3, c: Rgb888) -> [f32; 3] {
-    let ch = |l: f32, v: u8| crate::scene::clamp01(l) * v as f32;
+fn lit(light: Vec3, c: Rgb888, clamp: bool) -> [f32; 3] {
+    let ch = |l: f32, v: u8| if clamp { crate::scene::clamp01(l) } else { l } * v as f32;
     [ch(light.x, c.r()), ch(light.y, c.g()), ch(light.z, c.b())]
 }
 

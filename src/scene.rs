@@ -100,20 +100,41 @@ pub struct Lighting {
     pub sun: Option<(Vec3, Vec3)>,
     /// The eye (camera position), for specular highlights.
     pub eye: Vec3,
+    /// Whether diffuse light stays within [0, 1] without clamping (see
+    /// [`Lighting::in_unit_range`]).
+    in_unit: bool,
 }
 
 impl Lighting {
     /// Full ambient and no light sources.
-    pub const UNLIT: Self = Self { ambient: Vec3::ONE, point: None, sun: None, eye: Vec3::ZERO };
+    pub const UNLIT: Self = Self { ambient: Vec3::ONE, point: None, sun: None, eye: Vec3::ZERO, in_unit: true };
 
     /// Prepares `lights` seen from `eye`.
     pub fn new(lights: &Lights, eye: Vec3) -> Self {
-        Self {
-            ambient: lights.ambient,
-            point: lights.point,
-            sun: lights.directional.map(|d| ((-d.direction).normalize_or_zero(), d.color)),
-            eye,
+        let (ambient, point) = (lights.ambient, lights.point);
+        let sun = lights.directional.map(|d| ((-d.direction).normalize_or_zero(), d.color));
+        Self { ambient, point, sun, eye, in_unit: Self::bounded(ambient, point.map(|p| p.color), sun.map(|s| s.1)) }
+    }
+
+    /// Whether every channel of `ambient + Σ colors` is in [0, 1], each
+    /// term non-negative (false for NaN). Then so is the diffuse light at
+    /// every point: each color is scaled by a factor in [0, 1] and summed
+    /// in the same order, and rounding is monotonic.
+    fn bounded(ambient: Vec3, point: Option<Vec3>, sun: Option<Vec3>) -> bool {
+        let non_negative = |v: Vec3| v.x >= 0.0 && v.y >= 0.0 && v.z >= 0.0;
+        let mut sum = ambient;
+        let mut ok = non_negative(ambient);
+        for color in [point, sun].into_iter().flatten() {
+            ok &= non_negative(color);
+            sum = sum + color;
         }
+        ok && sum.x <= 1.0 && sum.y <= 1.0 && sum.z <= 1.0
+    }
+
+    /// Whether the diffuse light ([`Lighting::diffuse`]) is within [0, 1]
+    /// in every channel at every point, so that lighting needs no clamp.
+    pub fn in_unit_range(&self) -> bool {
+        self.in_unit
     }
 
     /// The same lights seen from the model space of a mesh placed by a
@@ -126,6 +147,7 @@ impl Lighting {
             point: self.point.map(|p| PointLight { position: inverse.transform_point3(p.position), color: p.color }),
             sun: self.sun.map(|(l, color)| (inverse.upper3().transform(l).normalize_or_zero(), color)),
             eye: inverse.transform_point3(self.eye),
+            in_unit: self.in_unit,
         }
     }
 
@@ -173,6 +195,7 @@ pub(crate) fn clamp01(x: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use embedded_graphics::pixelcolor::Rgb888;
 
     #[test]
     fn n_dot_l_is_clamped_and_never_nan() {
@@ -188,6 +211,46 @@ mod tests {
         assert_eq!(lights.diffuse(Vec3::new(0.0, 0.0, -1.0), n), Vec3::ZERO);
         assert_eq!(lights.diffuse(Vec3::ZERO, Vec3::ZERO), Vec3::ZERO);
         assert_eq!(lights.diffuse(Vec3::ZERO, Vec3::new(f32::NAN, 0.0, 0.0)), Vec3::ZERO);
+    }
+
+    #[test]
+    fn lights_within_the_unit_range_skip_the_clamp_and_others_keep_it() {
+        let sun = |color: Vec3| Some(DirectionalLight { direction: Vec3::new(0.3, -0.4, 1.0), color });
+        let point = |color: Vec3| Some(PointLight { position: Vec3::new(1.0, 2.0, -3.0), color });
+        let lighting = |ambient: Vec3, point, directional| Lighting::new(&Lights { ambient, point, directional }, Vec3::ZERO);
+        let grey = Vec3::new;
+        // Default lights sum to 1 (0.15 + 0.85 rounds to 1.0 in f32).
+        assert!(Lighting::new(&Lights::default(), Vec3::ZERO).in_unit_range());
+        assert!(lighting(grey(0.25, 0.0, 0.5), point(grey(0.25, 1.0, 0.25)), sun(grey(0.5, 0.0, 0.25))).in_unit_range());
+        assert!(Lighting::UNLIT.in_unit_range());
+        for (ambient, p, d) in [
+            (grey(0.5, 0.5, 0.5), None, sun(grey(0.6, 0.6, 0.6))),
+            (grey(0.0, 0.0, 0.0), point(grey(0.7, 0.0, 0.0)), sun(grey(0.4, 0.0, 0.0))),
+            (grey(-0.1, 0.0, 0.0), None, sun(grey(0.5, 0.5, 0.5))),
+            (grey(0.1, 0.1, 0.1), None, sun(grey(0.5, -0.2, 0.5))),
+            (grey(f32::NAN, 0.1, 0.1), None, None),
+            (grey(0.1, 0.1, 0.1), point(grey(0.1, f32::INFINITY, 0.1)), None),
+        ] {
+            assert!(!lighting(ambient, p, d).in_unit_range(), "{ambient:?} {p:?} {d:?}");
+        }
+        // Out of range, lit colors are clamped; in range they need not be.
+        let n = Vec3::new(-0.3, 0.4, -1.0).normalize_or_zero();
+        let bright = lighting(grey(1.0, 1.0, 1.0), None, sun(grey(1.0, 1.0, 1.0)));
+        assert_eq!(crate::effect::lit_by(&bright, Vec3::ZERO, n, Rgb888::new(200, 100, 50)), [200.0, 100.0, 50.0]);
+        let moved = bright.in_model_space(&Mat4::translation(Vec3::new(1.0, 2.0, 3.0)), 1.0);
+        assert!(!moved.in_unit_range());
+        // In range, the unclamped light stays in [0, 1] at every point and
+        // normal of a sweep.
+        let lit = lighting(grey(0.15, 0.3, 0.0), point(grey(0.35, 0.2, 0.5)), sun(grey(0.5, 0.5, 0.5)));
+        assert!(lit.in_unit_range() && lit.in_model_space(&Mat4::translation(Vec3::ONE), 1.0).in_unit_range());
+        for k in 0..2000 {
+            let t = k as f32 * 0.37;
+            let normal = Vec3::new(t.sin(), (t * 1.7).cos(), (t * 0.3).sin() - 0.5).normalize_or_zero();
+            let light = lit.diffuse(Vec3::new(t.cos(), 0.5, -t.sin()), normal);
+            for c in [light.x, light.y, light.z] {
+                assert!((0.0..=1.0).contains(&c), "{light:?} at {normal:?}");
+            }
+        }
     }
 
     #[test]
