@@ -136,8 +136,9 @@ pub struct FrameStats {
 /// separate monomorphized span loop.
 pub trait MaterialProgram<C, S: Settings, const V: usize> {
     /// Rasterizes one triangle into a strip, lit by `lights` (the draw
-    /// call's, for effects that light pixels).
-    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting);
+    /// call's, for effects that light pixels). `face` is the triangle's
+    /// RGB color, read only by effects that use one.
+    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: &[u8; 3], lights: &Lighting);
 }
 
 impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
@@ -148,10 +149,10 @@ where
     P: Perspective,
     D: DepthMode,
 {
-    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: Rgb888, lights: &Lighting) {
+    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: &[u8; 3], lights: &Lighting) {
         let uniforms = self.effect.uniforms::<S::Interp>(lights, self.color);
-        // Converted only for effects that use it.
-        let face = if E::USES_FACE { C::from(face) } else { C::BLACK };
+        // Read and converted only for effects that use it.
+        let face = if E::USES_FACE { C::from(Rgb888::new(face[0], face[1], face[2])) } else { C::BLACK };
         raster::rasterize::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS)
     }
 }
@@ -779,7 +780,7 @@ where
                 let vs = &b.vertices;
                 let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
                 let (program, _, lights) = &draws[draw];
-                program.rasterize(&mut strip, tri, Rgb888::new(rec.face[0], rec.face[1], rec.face[2]), lights);
+                program.rasterize(&mut strip, tri, &tris[i as usize].face, lights);
                 let bottom = tri[0].y.max(tri[1].y).max(tri[2].y);
                 if first_row_at_or_below(bottom, bits) > (y0 + rows) as i32 {
                     tris[i as usize].next = NONE;
