@@ -72,33 +72,57 @@ impl<const V: usize> ScreenVertex<V> {
 /// beyond the [`guard`] band. Gives exactly what [`snap_f64`] gives for the same value.
 #[inline]
 pub fn snap(v: f32, subpixel_bits: u32) -> Option<i32> {
-    // Scaling by a power of two is exact. Below 2^23 adding 0.5 is exact
-    // too; above, every f32 is already an integer.
-    let s = v * (1u32 << subpixel_bits) as f32;
-    let r = if s.abs() < 8_388_608.0 { floor_f32(s + 0.5) } else { s };
-    let limit = (guard(subpixel_bits) >> 1) as f32;
-    if r >= -limit && r <= limit {
-        Some((r as i32) << 1)
+    // Rounding half up is `floor(s + 0.5) = floor((floor(2 s) + 1) / 2)`
+    // for the scaled value `s`, and `2 s` is exact (a power of two times
+    // `v`): no rounded sum (in `f32`, `s + 0.5` rounds up for `s` just
+    // below a half).
+    let u = v * (2u32 << subpixel_bits) as f32;
+    let limit = guard(subpixel_bits) >> 1;
+    // The band is `floor(u)` in `[-2 limit - 1, 2 limit]`, i.e. `u` in
+    // `[-2 limit - 1, 2 limit + 1)`; NaN is outside.
+    let (lo, hi) = (-2 * limit - 1, 2 * limit + 1);
+    let inside = if hi <= 1 << 24 {
+        // Bounds exact in f32 (5 sub-pixel bits or more, the usual; known
+        // once this is inlined): one range test.
+        u >= lo as f32 && u < hi as f32
     } else {
-        None
+        // Below that |u| < 2^29 keeps `floor(u)` in i32 (where |u| >= 2^24
+        // it is an integer), and the band is tested on it.
+        u > -536_870_912.0 && u < 536_870_912.0 && {
+            let i = floor_to_i32(u);
+            i >= lo && i < hi
+        }
+    };
+    if !inside {
+        return None;
+    }
+    // (floor(u) + 1) >> 1, times two.
+    Some((floor_to_i32(u) + 1) & !1)
+}
+
+/// `floor(u)` for `|u| < 2^29`.
+#[inline(always)]
+fn floor_to_i32(u: f32) -> i32 {
+    let i = u as i32;
+    if i as f32 > u {
+        i - 1
+    } else {
+        i
     }
 }
 
 /// [`snap`] for `f64` input (window-space input files keep full precision).
 #[inline]
 pub fn snap_f64(v: f64, subpixel_bits: u32) -> Option<i32> {
-    let s = v * (1u32 << subpixel_bits) as f64;
-    let t = s + 0.5;
-    let mut r = t as i64 as f64;
-    if r > t {
-        r -= 1.0;
+    // As in `snap`: `floor(s + 0.5)` from the exact `2 s`; every bound
+    // is exact in f64, and NaN fails the test.
+    let u = v * (2u32 << subpixel_bits) as f64;
+    let limit = guard(subpixel_bits) >> 1;
+    if !(u >= (-2 * limit - 1) as f64 && u < (2 * limit + 1) as f64) {
+        return None;
     }
-    let limit = (guard(subpixel_bits) >> 1) as f64;
-    if r >= -limit && r <= limit {
-        Some((r as i32) << 1)
-    } else {
-        None
-    }
+    let i = u as i32;
+    Some((if i as f64 > u { i - 1 } else { i } + 1) & !1)
 }
 
 #[inline]
@@ -979,6 +1003,46 @@ mod tests {
         assert_eq!(snap_f64(600_000.0, 4), None); // beyond the guard band at 4 bits
         assert_eq!(snap_f64(-2.5, 0), Some(-4));
         assert_eq!(snap_f64(f64::INFINITY, 4), None);
+        assert_eq!(snap_f64(f64::NAN, 4), None);
+        // Just below a half rounds down, however close (a rounded
+        // `s + 0.5` would give 1), and a half rounds up, also negative.
+        assert_eq!(snap_f64(0.49999999999999994, 0), Some(0));
+        assert_eq!(snap(0.49999997, 0), Some(0));
+        assert_eq!(snap_f64(0.5, 0), Some(2));
+        assert_eq!(snap_f64(-0.5, 0), Some(0));
+        assert_eq!(snap_f64(-0.5000000000000001, 0), Some(-2));
+    }
+
+    #[test]
+    fn snapping_in_f32_gives_what_f64_gives() {
+        // Around the band's ends, half-units, 2^22 and 2^23 (where f32
+        // steps are a half and one unit), and random bit patterns, for
+        // every sub-pixel setting (both of `snap`'s paths).
+        let mut next = crate::math::xorshift(0x5EED_0F32);
+        for bits in 0..=8 {
+            let unit = (1u32 << bits) as f32;
+            let limit = (guard(bits) >> 1) as f32;
+            let mut values = std::vec![f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 0.0, -0.0, f32::MAX, f32::MIN_POSITIVE];
+            for edge in [limit, 4_194_304.0, 8_388_608.0, 0.5, 1.5] {
+                for sign in [1.0f32, -1.0] {
+                    let s = sign * edge;
+                    for k in -8..=8 {
+                        // Scaled values a few f32 steps and half-units around the edge.
+                        let nudged = f32::from_bits((s.to_bits() as i32 + k) as u32);
+                        values.extend([nudged / unit, (s + k as f32 * 0.25) / unit, (s + 0.5) / unit, (s - 0.5) / unit]);
+                    }
+                }
+            }
+            for _ in 0..20_000 {
+                let v = f32::from_bits(next());
+                // Mostly magnitudes near the band, some of every size.
+                let v = if v.is_finite() && next() % 4 != 0 { v % (limit * 2.0 / unit) } else { v };
+                values.push(v);
+            }
+            for v in values {
+                assert_eq!(snap(v, bits), snap_f64(v as f64, bits), "{v} at {bits} sub-pixel bits");
+            }
+        }
     }
 
     #[test]
