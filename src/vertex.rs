@@ -177,6 +177,15 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
         }
         flags |= OUTSIDE_GUARD;
     }
+    unprojected(flags)
+}
+
+/// A stored vertex without a window position, flagged why. Cold and out
+/// of line: built inline, its zeros were set up on the common path of
+/// every vertex (ten moves a vertex, `f32` on the M4F).
+#[cold]
+#[inline(never)]
+pub(crate) fn unprojected<const V: usize>(flags: i32) -> ScreenVertex<V> {
     ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
 }
 

@@ -30,7 +30,7 @@
 //! integer tests put inside the near and far planes is inside for the
 //! clipper too.
 
-use super::{all_finite, BEHIND_NEAR, BEYOND_FAR, NOT_FINITE, OUTSIDE_GUARD, UNPROJECTED};
+use super::{all_finite, BEHIND_NEAR, BEYOND_FAR, NOT_FINITE, OUTSIDE_GUARD};
 use crate::math::{mul_wide, reciprocal_q61, Mat4, Vec4};
 use crate::mesh::{Sphere, Vectors};
 use crate::raster::{guard, ScreenVertex};
@@ -298,7 +298,7 @@ impl<'a> IntegerProjection<'a> {
             }
             _ => NOT_FINITE,
         };
-        ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
+        super::unprojected(flags)
     }
 }
 
