@@ -473,7 +473,7 @@ where
     {
         let (model, lights) = (&stage.model, self.lights);
         for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
-            *slot = vertices.vertex::<E, C, V>(stage, mesh, i);
+            vertices.vertex::<E, C, V>(stage, mesh, i, slot);
         }
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;

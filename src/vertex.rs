@@ -124,16 +124,17 @@ impl<E: Effect> VertexStage<'_, E> {
         vertex_varyings::<C, E, V>(self.effect, &input, self.lights)
     }
 
-    /// Transforms mesh vertex `i` into a stored vertex: projected and
-    /// snapped if it is inside the near/far planes and the guard band,
+    /// Transforms mesh vertex `i` into the stored vertex `out`: projected
+    /// and snapped if it is inside the near/far planes and the guard band,
     /// otherwise flagged. Inlined into the draw loop, where the viewport
-    /// and sub-pixel bits are constants.
+    /// and sub-pixel bits are constants; written in place, not returned
+    /// and copied (a copy of the whole vertex per vertex).
     #[inline(always)]
-    pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
+    pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, out: &mut ScreenVertex<V>) {
         let p = mesh.position(i);
         let clip = self.clip_position(p);
         let attrs = self.varyings_at::<C, V>(mesh, i, p, |position, normal, color| lit_input::<C, E>(self.lights, position, normal, color));
-        project(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits)
+        project_into(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits, out)
     }
 }
 
@@ -153,6 +154,15 @@ fn all_finite(values: &[f32]) -> bool {
 /// Projects and snaps a clip-space vertex, or flags why it cannot be.
 #[inline(always)]
 pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
+    let mut out = ScreenVertex::ZERO;
+    project_into(v, width, height, subpixel_bits, &mut out);
+    out
+}
+
+/// [`project`] into `out`, where the vertex is stored: built in place,
+/// not built and then copied (the vertex loop's common path).
+#[inline(always)]
+pub(crate) fn project_into<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32, out: &mut ScreenVertex<V>) {
     let c = v.pos;
     let mut flags = 0;
     // A non-finite varying (a NaN texture coordinate) would be drawn as
@@ -173,20 +183,21 @@ pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpi
         let q = 1.0 / c.w;
         let (x, y) = ((c.x * q + 1.0) * 0.5 * width, (1.0 - c.y * q) * 0.5 * height);
         if let (Some(x), Some(y)) = (snap(x, subpixel_bits), snap(y, subpixel_bits)) {
-            return ScreenVertex { x, y, z: c.z * q, q, attrs: v.attrs };
+            *out = ScreenVertex { x, y, z: c.z * q, q, attrs: v.attrs };
+            return;
         }
         flags |= OUTSIDE_GUARD;
     }
-    unprojected(flags)
+    store_unprojected(out, flags)
 }
 
-/// A stored vertex without a window position, flagged why. Cold and out
+/// Stores a vertex without a window position, flagged why. Cold and out
 /// of line: built inline, its zeros were set up on the common path of
 /// every vertex (ten moves a vertex, `f32` on the M4F).
 #[cold]
 #[inline(never)]
-pub(crate) fn unprojected<const V: usize>(flags: i32) -> ScreenVertex<V> {
-    ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO }
+pub(crate) fn store_unprojected<const V: usize>(out: &mut ScreenVertex<V>, flags: i32) {
+    *out = ScreenVertex { x: UNPROJECTED, y: flags, ..ScreenVertex::ZERO };
 }
 
 /// [`project`] as a call, for the rare draw call of a fixed-point
@@ -204,8 +215,8 @@ fn project_out_of_line<const V: usize>(v: &ClipVertex<V>, width: f32, height: f3
 pub trait VertexArithmetic {
     /// The varyings of mesh vertex `i`.
     fn varyings<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> [f32; V];
-    /// The stored vertex of mesh vertex `i`.
-    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V>;
+    /// Stores the vertex of mesh vertex `i` in `out`.
+    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize, out: &mut ScreenVertex<V>);
     /// Clip-space position of mesh vertex `i`, as the clipper sees it: the
     /// one its stored vertex was flagged by.
     fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4;
@@ -220,8 +231,14 @@ impl VertexArithmetic for FloatVertices {
         stage.varyings::<C, V>(mesh, i)
     }
     #[inline(always)]
-    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
-        stage.vertex::<C, V>(mesh, i)
+    fn vertex<E: Effect, C: Color, const V: usize>(
+        &self,
+        stage: &VertexStage<'_, E>,
+        mesh: &Mesh<'_>,
+        i: usize,
+        out: &mut ScreenVertex<V>,
+    ) {
+        stage.vertex::<C, V>(mesh, i, out)
     }
     #[inline(always)]
     fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4 {
@@ -249,13 +266,19 @@ impl VertexArithmetic for IntegerVertices<'_> {
         }
     }
     #[inline(always)]
-    fn vertex<E: Effect, C: Color, const V: usize>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> ScreenVertex<V> {
+    fn vertex<E: Effect, C: Color, const V: usize>(
+        &self,
+        stage: &VertexStage<'_, E>,
+        mesh: &Mesh<'_>,
+        i: usize,
+        out: &mut ScreenVertex<V>,
+    ) {
         let attrs = self.varyings::<E, C, V>(stage, mesh, i);
         match &self.projection {
-            Some(p) => p.project(i, attrs),
+            Some(p) => p.project_into(i, attrs, out),
             None => {
                 let v = ClipVertex { pos: stage.clip_position(mesh.position(i)), attrs, src: 0 };
-                project_out_of_line(&v, stage.width, stage.height, stage.subpixel_bits)
+                *out = project_out_of_line(&v, stage.width, stage.height, stage.subpixel_bits);
             }
         }
     }

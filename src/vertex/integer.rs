@@ -263,6 +263,15 @@ impl<'a> IntegerProjection<'a> {
     /// flags it like [`project`](super::project).
     #[inline(always)]
     pub fn project<const V: usize>(&self, i: usize, attrs: [f32; V]) -> ScreenVertex<V> {
+        let mut out = ScreenVertex::ZERO;
+        self.project_into(i, attrs, &mut out);
+        out
+    }
+
+    /// [`IntegerProjection::project`] into `out`, where the vertex is
+    /// stored (see [`project_into`](super::project_into)).
+    #[inline(always)]
+    pub(super) fn project_into<const V: usize>(&self, i: usize, attrs: [f32; V], out: &mut ScreenVertex<V>) {
         let flags = match self.input(i) {
             Some(p) if all_finite(&attrs) => {
                 let [x, y, z, w] = self.clip(p);
@@ -281,13 +290,14 @@ impl<'a> IntegerProjection<'a> {
                         // 1 / w = r 2^(n - 61 + s), and z / w = (z r) 2^(n - 61),
                         // in [0, 1] but for the reciprocal's error.
                         let depth = ((mul_wide(z, r) >> (31 - n)) as u32).min(1 << 30);
-                        return ScreenVertex {
+                        *out = ScreenVertex {
                             x: sx,
                             y: sy,
                             z: f32_from_parts(depth, -30),
                             q: f32_from_parts(r as u32, n as i32 - 61 + self.scale[3]),
                             attrs,
                         };
+                        return;
                     }
                 }
                 if flags == 0 {
@@ -298,7 +308,7 @@ impl<'a> IntegerProjection<'a> {
             }
             _ => NOT_FINITE,
         };
-        super::unprojected(flags)
+        super::store_unprojected(out, flags)
     }
 }
 
