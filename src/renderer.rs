@@ -494,14 +494,12 @@ where
             } else {
                 Rgb888::BLACK
             };
-            // The rare clip path finds its corners again from the indices:
-            // captured, the arrays above would be stored per triangle.
-            let res = self.assemble(corners, face, material.cull, P::CORRECT, move |vi| {
-                let i = t[vi] as usize;
+            let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
+                let i = local[vi];
                 ClipVertex {
                     pos: vertices.clip_position(stage, mesh, i),
                     attrs: vertices.varyings::<E, C, V>(stage, mesh, i),
-                    src: (base + i) as u16,
+                    src: corners[vi],
                 }
             });
             if let Err(e) = res {
