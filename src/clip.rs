@@ -1,6 +1,8 @@
 //! Clipping and culling: whole-mesh rejection by bounding sphere,
-//! homogeneous clipping against the near and far planes, and guard-band
-//! clipping in window space for vertices the fixed-point setup cannot hold.
+//! back-face culling in model space from baked face planes
+//! ([`BackFaceTest`]), homogeneous clipping against the near and far
+//! planes, and guard-band clipping in window space for vertices the
+//! fixed-point setup cannot hold.
 //!
 //! Only the near and far planes are clipped in homogeneous space: `w` at or
 //! behind the eye never reaches the perspective divide, so nothing behind
@@ -11,6 +13,7 @@
 //! pixel.
 
 use crate::math::{Mat4, Vec3, Vec4};
+use crate::mesh::{FacePlane, Sphere};
 use heapless::Vec;
 
 /// Most vertices a clipped triangle can have (3 + near + far + 4 guard planes).
@@ -55,6 +58,69 @@ pub fn sphere_in_frustum(view_proj: &Mat4, center: Vec3, radius: f32) -> SphereT
         }
     }
     result
+}
+
+/// Back-face culling in model space, before the vertex stage, from a
+/// mesh's baked [face planes](crate::mesh::Mesh::with_face_planes).
+///
+/// A triangle's winding on screen is the side of its plane the eye is on.
+/// With `A` the rows `x`, `y`, `w` of the model-view-projection matrix,
+/// `det[A p̂a, A p̂b, A p̂c]` (`p̂ = (p, 1)`), whose sign is the winding for
+/// vertices in front of the eye (`w > 0`), equals `-(n · g - gw d)` for
+/// the plane `n · p = d` through them, where `(g, gw)` is the vector of
+/// `A`'s 3×3 minors: the eye in homogeneous form (`gw = 0` for an
+/// orthographic camera, a mirroring model matrix flips its sign). So a
+/// face is clockwise, front, where `n · g - gw d > 0`.
+///
+/// Only faces turned away by a margin are culled here: `n · g - gw d <
+/// -T`, with `T` the margin times an upper bound of `|g - gw p|` over the
+/// mesh's bounding sphere. That is, faces seen at less than [`EDGE_ON`]
+/// from edge-on are left to the exact test on snapped screen coordinates,
+/// where snapping decides their winding.
+#[derive(Clone, Copy, Debug)]
+pub struct BackFaceTest {
+    g: [f32; 3],
+    gw: f32,
+    threshold: f32,
+}
+
+/// The sine of the angle from edge-on within which [`BackFaceTest`] leaves
+/// a face to the screen-space test (about 1.8°).
+pub const EDGE_ON: f32 = 1.0 / 32.0;
+
+impl BackFaceTest {
+    /// The test for a mesh of bounds `bounds` drawn with model-view-projection
+    /// `mvp`; `None` if it is not finite. Inlined: a call would take the
+    /// matrix's address, which costs the vertex loop registers.
+    #[inline(always)]
+    pub fn new(mvp: &Mat4, bounds: Sphere) -> Option<Self> {
+        let m = &mvp.m;
+        let a = [m[0], m[1], m[3]];
+        // The 3×3 minor of `a` without column `skip`.
+        let minor = |skip: usize| {
+            let c: [usize; 3] = match skip {
+                0 => [1, 2, 3],
+                1 => [0, 2, 3],
+                2 => [0, 1, 3],
+                _ => [0, 1, 2],
+            };
+            let e = |r: usize, k: usize| a[r][c[k]];
+            e(0, 0) * (e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1)) - e(0, 1) * (e(1, 0) * e(2, 2) - e(1, 2) * e(2, 0))
+                + e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0))
+        };
+        let (g, gw) = ([-minor(0), minor(1), -minor(2)], minor(3));
+        let to_center = Vec3::new(g[0] - gw * bounds.center.x, g[1] - gw * bounds.center.y, g[2] - gw * bounds.center.z);
+        let threshold = EDGE_ON * (to_center.length() + gw.abs() * bounds.radius);
+        let finite = g.iter().all(|v| v.is_finite()) && gw.is_finite() && threshold.is_finite();
+        finite.then_some(Self { g, gw, threshold })
+    }
+
+    /// Whether the face of plane `p` is turned away from the eye by more
+    /// than the margin. False for a NaN or zero plane.
+    #[inline(always)]
+    pub fn culls(&self, p: &FacePlane) -> bool {
+        p[0] * self.g[0] + p[1] * self.g[1] + p[2] * self.g[2] - p[3] * self.gw < -self.threshold
+    }
 }
 
 /// A vertex in clip space with its varyings.
@@ -211,6 +277,62 @@ pub fn clip_guard<const V: usize>(poly: &mut Polygon<WindowVertex<V>>, limit: f6
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Twice the signed window area (y down; positive is clockwise, a
+    /// front face) of a model-space triangle, in `f64`, if all three
+    /// vertices are in front of the eye.
+    fn window_area2(mvp: &Mat4, p: [Vec3; 3]) -> Option<f64> {
+        let mut s = [(0.0f64, 0.0f64); 3];
+        for (k, v) in p.iter().enumerate() {
+            let m = &mvp.m;
+            let row = |r: usize| m[r][0] as f64 * v.x as f64 + m[r][1] as f64 * v.y as f64 + m[r][2] as f64 * v.z as f64 + m[r][3] as f64;
+            let (x, y, w) = (row(0), row(1), row(3));
+            if w <= 1e-9 {
+                return None;
+            }
+            s[k] = (x / w, -y / w);
+        }
+        Some((s[1].0 - s[0].0) * (s[2].1 - s[0].1) - (s[1].1 - s[0].1) * (s[2].0 - s[0].0))
+    }
+
+    #[test]
+    fn model_space_culling_culls_only_back_faces() {
+        let mut next = crate::math::xorshift(0x9E37_79B9);
+        let mut u = move |lo: f32, hi: f32| lo + (hi - lo) * (next() as f32 / u32::MAX as f32);
+        // Perspective and orthographic cameras, models turned, scaled
+        // unevenly and mirrored.
+        let orthographic = Mat4 { m: [[0.1, 0.0, 0.0, 0.0], [0.0, 0.13, 0.0, 0.0], [0.0, 0.0, 0.01, 0.5], [0.0, 0.0, 0.0, 1.0]] };
+        let (mut culled, mut back) = (0, 0);
+        for case in 0..400 {
+            let eye = Vec3::new(u(-20.0, 20.0), u(-20.0, 20.0), u(-20.0, 20.0));
+            let view = Mat4::look_at_lh(eye, Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0));
+            let projection = if case % 4 == 3 { orthographic } else { Mat4::perspective_fov_lh(u(0.4, 1.5), 4.0 / 3.0, 0.1, 100.0) };
+            let mirror = if case % 2 == 1 { -1.0 } else { 1.0 };
+            let model = Mat4::rotation_y(u(0.0, 6.3))
+                * Mat4::rotation_x(u(0.0, 6.3))
+                * Mat4::scaling(Vec3::new(mirror * u(0.2, 3.0), u(0.2, 3.0), u(0.2, 3.0)));
+            let mvp = projection * view * model;
+            let bounds = Sphere { center: Vec3::new(0.5, -0.5, 0.25), radius: 2.0 };
+            let test = BackFaceTest::new(&mvp, bounds).unwrap();
+            for _ in 0..100 {
+                let mut point = || {
+                    let d = Vec3::new(u(-1.0, 1.0), u(-1.0, 1.0), u(-1.0, 1.0)) * 1.15;
+                    bounds.center + d
+                };
+                let p = [point(), point(), point()];
+                let Some(area) = window_area2(&mvp, p) else { continue };
+                let plane = crate::mesh::face_plane(p[0], p[1], p[2]);
+                if test.culls(&plane) {
+                    assert!(area < 0.0, "case {case}: a front face {p:?} (area {area}) was culled");
+                    culled += 1;
+                }
+                back += usize::from(area < 0.0);
+            }
+        }
+        // Most back faces are culled (the sign is not inverted, and the
+        // margin is small).
+        assert!(culled * 10 > back * 9, "{culled} of {back} back faces culled");
+    }
 
     fn cv(x: f32, y: f32, z: f32, w: f32, a: f32) -> ClipVertex<1> {
         ClipVertex { pos: Vec4::new(x, y, z, w), attrs: [a], src: 0 }

@@ -24,8 +24,10 @@
 //! ## The pipeline, one module per stage
 //! 1. [`mesh`]: static mesh data and generated shapes.
 //! 2. [`vertex`]: transforms, normals, per-vertex lighting, projection.
-//! 3. [`clip`]: bounding-sphere rejection, near/far and guard-band clipping
-//!    (culling by snapped winding happens at assembly in [`renderer`]).
+//! 3. [`clip`]: bounding-sphere rejection, back-face culling in model space
+//!    for meshes with face planes (before the vertex stage), near/far and
+//!    guard-band clipping (culling by snapped winding happens at assembly in
+//!    [`renderer`]).
 //! 4. [`raster`]: snapping, exact top-left coverage, plane equations, span loops.
 //! 5. [`renderer`]: frame buffers, binning, strips and output.
 //!

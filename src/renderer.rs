@@ -22,7 +22,7 @@
 //! draw-call slot ([`MAX_DRAW_CALLS`]: the material and the draw call's
 //! lights) on the stack while it is recorded.
 
-use crate::clip::{self, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
+use crate::clip::{self, BackFaceTest, ClipVertex, Polygon, SphereTest, WindowVertex, NO_SOURCE};
 use crate::effect::{vertex_varyings, Color, Effect, FaceInput, VertexInput};
 use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
@@ -358,6 +358,10 @@ pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
     stats: FrameStats,
 }
 
+/// Whether draw calls cull back faces in model space where meshes have
+/// face planes (the `face-planes` feature, on parts with an FPU).
+const CULL_IN_MODEL_SPACE: bool = cfg!(feature = "face-planes") && crate::math::HARD_FLOAT;
+
 /// A triangle in flight through assembly: its vertices' buffer indices.
 type Corners = [u16; 3];
 
@@ -400,11 +404,42 @@ where
     /// Errors leave the frame as it was; geometry that cannot be drawn
     /// (non-finite, off screen, back-facing) is skipped and counted in
     /// [`FrameStats`].
+    ///
+    /// With the `face-planes` feature, [face planes](Mesh::with_face_planes)
+    /// and back-face culling (on a part with an FPU), back faces are culled in model space
+    /// before the vertex stage, which then skips the vertices only they
+    /// use; the frame is the same.
+    #[inline]
+    pub fn draw<E, P, D>(&mut self, mesh: &Mesh<'_>, model: &Mat4, material: &'m Material<E, P, D>) -> Result<(), DrawError>
+    where
+        E: Effect,
+        P: Perspective,
+        D: DepthMode,
+    {
+        // Two copies of the draw call, with and without culling in model
+        // space: in one, the marking cost meshes without face planes 2% of
+        // a frame (`f32` M4F; the vertex loop spilled registers). The copy
+        // costs flash, so it is a feature. Without an FPU each plane test
+        // would be float library calls.
+        if CULL_IN_MODEL_SPACE && material.cull == Cull::Back && mesh.face_planes().is_some() {
+            self.draw_mesh::<E, P, D, true>(mesh, model, material)
+        } else {
+            self.draw_mesh::<E, P, D, false>(mesh, model, material)
+        }
+    }
+
+    /// [`Frame::draw`], culling back faces in model space first if
+    /// `CULL_FIRST`.
     // Out of line: merged into a large caller (a firmware drawing every
     // effect), its per-triangle loop lost registers and took 1.6% more of
     // a flat frame than in a flat-only firmware (scripts/effects-bench.sh).
     #[inline(never)]
-    pub fn draw<E, P, D>(&mut self, mesh: &Mesh<'_>, model: &Mat4, material: &'m Material<E, P, D>) -> Result<(), DrawError>
+    fn draw_mesh<E, P, D, const CULL_FIRST: bool>(
+        &mut self,
+        mesh: &Mesh<'_>,
+        model: &Mat4,
+        material: &'m Material<E, P, D>,
+    ) -> Result<(), DrawError>
     where
         E: Effect,
         P: Perspective,
@@ -449,15 +484,15 @@ where
             let lighting = lit_in_model_space
                 .then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals(), E::lit_scale::<C>()))
                 .flatten();
-            return self.queue_mesh(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
+            return self.queue_mesh::<E, P, D, _, CULL_FIRST>(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
         }
-        self.queue_mesh(mesh, material, &stage, &FloatVertices, base)
+        self.queue_mesh::<E, P, D, _, CULL_FIRST>(mesh, material, &stage, &FloatVertices, base)
     }
 
     /// Runs the vertex stage over `mesh` into the vertex buffer from
     /// `base` on, then assembles and queues its triangles.
     #[inline(always)]
-    fn queue_mesh<E, P, D, J>(
+    fn queue_mesh<E, P, D, J, const CULL_FIRST: bool>(
         &mut self,
         mesh: &Mesh<'_>,
         material: &'m Material<E, P, D>,
@@ -472,7 +507,17 @@ where
         J: VertexArithmetic,
     {
         let (model, lights) = (&stage.model, self.lights);
+        // With `CULL_FIRST`, back faces are culled in model space first,
+        // and vertices only they use are not transformed (see
+        // `mark_unused_vertices`).
+        let test = if CULL_FIRST { BackFaceTest::new(&stage.mvp, mesh.bounds()) } else { None };
+        if let Some(test) = test {
+            mark_unused_vertices(test, mesh, &mut self.b.vertices[base..base + mesh.vertex_count()]);
+        }
         for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
+            if test.is_some() && slot.x == vertex::UNPROJECTED {
+                continue;
+            }
             vertices.vertex::<E, C, V>(stage, mesh, i, slot);
         }
         self.n_vertices += mesh.vertex_count();
@@ -598,6 +643,12 @@ where
             return self.emit(corners, face, cull);
         }
         let fl = v.map(vertex::flags);
+        // A vertex only faces culled in model space use was not
+        // transformed: its triangles are such faces.
+        if CULL_IN_MODEL_SPACE && fl.iter().any(|f| f & vertex::CULLED != 0) {
+            self.stats.back_facing += 1;
+            return Ok(());
+        }
         if fl.iter().any(|f| f & vertex::NOT_FINITE != 0) {
             self.stats.invalid += 1;
             return Ok(());
@@ -799,6 +850,30 @@ where
             sent?;
         }
         Ok(stats)
+    }
+}
+
+/// Marks the vertex slots of a mesh that only faces `test` culls use
+/// (flagged [`vertex::CULLED`]), so that the vertex stage skips them and
+/// their triangles are culled at assembly. Out of line, and given the
+/// test by value: given the matrix by reference, its escape kept the
+/// vertex loop from reloading the matrix where used (+2% on a mesh without
+/// planes, `f32` M4F, from spilled registers).
+#[inline(never)]
+fn mark_unused_vertices<const V: usize>(test: BackFaceTest, mesh: &Mesh<'_>, slots: &mut [ScreenVertex<V>]) {
+    for slot in slots.iter_mut() {
+        slot.x = vertex::UNPROJECTED;
+        slot.y = vertex::CULLED;
+    }
+    let planes = mesh.face_planes().unwrap_or(&[]);
+    for (t, plane) in mesh.indices().chunks_exact(3).zip(planes) {
+        if !test.culls(plane) {
+            for &k in t {
+                if let Some(slot) = slots.get_mut(k as usize) {
+                    slot.x = 0;
+                }
+            }
+        }
     }
 }
 

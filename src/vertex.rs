@@ -28,6 +28,8 @@ pub const BEYOND_FAR: i32 = 2;
 pub const OUTSIDE_GUARD: i32 = 4;
 /// Vertex with a non-finite position or varying.
 pub const NOT_FINITE: i32 = 8;
+/// Vertex that only faces culled in model space use: not transformed.
+pub const CULLED: i32 = 16;
 /// `x` of a vertex that has no window position; its `y` holds the flags
 /// above. (Keeps the flags without growing every stored vertex.)
 pub const UNPROJECTED: i32 = i32::MIN;

@@ -55,6 +55,16 @@ pub enum MeshError {
     },
     /// More vertices than a `u16` index can address.
     TooManyVertices(usize),
+    /// Face planes were given, but not one per triangle.
+    FacePlaneCount {
+        /// The number of planes.
+        planes: usize,
+        /// The number of triangles.
+        triangles: usize,
+    },
+    /// A face plane is not [`face_plane`] of its triangle (planes baked
+    /// from other positions).
+    FacePlane(usize),
 }
 
 impl core::fmt::Display for MeshError {
@@ -68,6 +78,8 @@ impl core::fmt::Display for MeshError {
                 write!(f, "mesh index {index} at position {at} is out of range (mesh has {vertices} vertices)")
             }
             MeshError::TooManyVertices(n) => write!(f, "mesh has {n} vertices; at most 65536 can be indexed"),
+            MeshError::FacePlaneCount { planes, triangles } => write!(f, "mesh has {planes} face planes for {triangles} triangles"),
+            MeshError::FacePlane(t) => write!(f, "face plane {t} is not the plane of triangle {t}"),
         }
     }
 }
@@ -162,6 +174,29 @@ pub struct Mesh<'a> {
     indices: &'a [u16],
     bounds: Sphere,
     unit_normals: bool,
+    planes: Option<&'a [FacePlane]>,
+}
+
+/// A triangle's plane in model space: unit normal `n` (`[0..3]`) and
+/// offset `d = n · a` (`[3]`), from [`face_plane`]. Baked with a mesh
+/// ([`Mesh::with_face_planes`]), they let a draw call cull back faces
+/// before the vertex stage and skip the vertices only back faces use.
+pub type FacePlane = [f32; 4];
+
+/// The plane of triangle `(a, b, c)`: its unit normal `(b - a) × (c - a)`
+/// normalized, and `n · a`, computed in `f64` and rounded once. Zero for a
+/// degenerate triangle (which no test then culls).
+pub const fn face_plane(a: Vec3, b: Vec3, c: Vec3) -> FacePlane {
+    let (a, b, c) = ([a.x as f64, a.y as f64, a.z as f64], [b.x as f64, b.y as f64, b.z as f64], [c.x as f64, c.y as f64, c.z as f64]);
+    let (u, v) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
+    let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    let len = shapes::const_sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    // Not finite or too small to normalize: no plane (never culled).
+    if !(len > 1e-300 && len < f64::MAX) {
+        return [0.0; 4];
+    }
+    let n = [n[0] / len, n[1] / len, n[2] / len];
+    [n[0] as f32, n[1] as f32, n[2] as f32, (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) as f32]
 }
 
 impl<'a> Mesh<'a> {
@@ -210,7 +245,7 @@ impl<'a> Mesh<'a> {
         }
         let bounds = bounding_sphere(&positions);
         let unit_normals = all_unit_or_zero(&normals);
-        Ok(Self { positions, normals, uvs: None, colors: None, indices, bounds, unit_normals })
+        Ok(Self { positions, normals, uvs: None, colors: None, indices, bounds, unit_normals, planes: None })
     }
 
     /// Adds texture coordinates, one per position.
@@ -229,6 +264,39 @@ impl<'a> Mesh<'a> {
         }
         self.colors = Some(colors);
         Ok(self)
+    }
+
+    /// Adds face planes, one per triangle, each checked to be exactly
+    /// [`face_plane`] of its triangle (in a `const` item, at compile time).
+    /// The bake tool emits them. A draw call with back-face culling then
+    /// culls in model space first (see [`BackFaceTest`](crate::clip::BackFaceTest)).
+    pub const fn with_face_planes(mut self, planes: &'a [FacePlane]) -> Result<Self, MeshError> {
+        let triangles = self.triangle_count();
+        if planes.len() != triangles {
+            return Err(MeshError::FacePlaneCount { planes: planes.len(), triangles });
+        }
+        let mut t = 0;
+        while t < triangles {
+            let i = &self.indices;
+            let expect =
+                face_plane(self.position(i[3 * t] as usize), self.position(i[3 * t + 1] as usize), self.position(i[3 * t + 2] as usize));
+            let (p, mut k) = (&planes[t], 0);
+            while k < 4 {
+                // Bit equality: NaN planes are rejected too.
+                if p[k].to_bits() != expect[k].to_bits() {
+                    return Err(MeshError::FacePlane(t));
+                }
+                k += 1;
+            }
+            t += 1;
+        }
+        self.planes = Some(planes);
+        Ok(self)
+    }
+
+    /// The face planes, if baked.
+    pub const fn face_planes(&self) -> Option<&'a [FacePlane]> {
+        self.planes
     }
 
     /// Vertex positions.

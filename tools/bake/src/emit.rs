@@ -9,6 +9,7 @@
 
 use crate::{Baked, BakedMesh, Quantize, Texels, NORMAL_SCALE};
 use soft3d::math::{Mat4, Vec2, Vec3};
+use soft3d::mesh::{face_plane, Vectors};
 use soft3d::Cull;
 use std::fmt::Write as _;
 
@@ -299,20 +300,36 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
             "::soft3d::mesh::Mesh::new_i16(&{id}_POSITIONS_I16, {id}_POSITION_SCALE, {id}_POSITION_OFFSET, &{id}_NORMALS_I16, &{id}_INDICES)"
         ),
     };
-    let _ = writeln!(o, "pub static {id}: ::soft3d::mesh::Mesh<'static> = match {new} {{");
-    match &m.uvs {
-        Some(_) => {
-            let _ = writeln!(o, "    ::core::result::Result::Ok(mesh) => match mesh.with_uvs(&{id}_UVS) {{");
-            let _ = writeln!(o, "        ::core::result::Result::Ok(mesh) => mesh,");
-            let _ = writeln!(o, "        ::core::result::Result::Err(_) => ::core::panic!(\"baked mesh {id}: bad uvs\"),");
-            let _ = writeln!(o, "    }},");
-        }
-        None => {
-            let _ = writeln!(o, "    ::core::result::Result::Ok(mesh) => mesh,");
-        }
+    if b.options.face_planes {
+        // Computed from the positions as the mesh stores them, by the
+        // function that checks them at compile time.
+        let stored = match &m.quantized {
+            None => Vectors::F32(&m.positions),
+            Some(q) => Vectors::I16 { steps: &q.steps.positions, scale: q.steps.position_scale, offset: q.steps.position_offset },
+        };
+        let planes = m.indices.chunks_exact(3).map(|t| face_plane(stored.get(t[0] as usize), stored.get(t[1] as usize), stored.get(t[2] as usize)));
+        let _ = writeln!(o, "/// Face planes of mesh {name} (unit normal, offset), one per triangle.\n{ALLOW_FLOATS}");
+        let _ = writeln!(o, "pub static {id}_FACE_PLANES: [[f32; 4]; {}] = [", m.indices.len() / 3);
+        listed(o, planes.map(floats));
+        let _ = writeln!(o, "];\n");
     }
-    let _ = writeln!(o, "    ::core::result::Result::Err(_) => ::core::panic!(\"baked mesh {id} is invalid\"),");
-    let _ = writeln!(o, "}};\n");
+    // Each optional part is one more validated step: `match step { Ok(mesh) => <next>, Err(_) => panic }`.
+    let mut steps = vec![(new, format!("baked mesh {id} is invalid"))];
+    if m.uvs.is_some() {
+        steps.push((format!("mesh.with_uvs(&{id}_UVS)"), format!("baked mesh {id}: bad uvs")));
+    }
+    if b.options.face_planes {
+        steps.push((format!("mesh.with_face_planes(&{id}_FACE_PLANES)"), format!("baked mesh {id}: bad face planes")));
+    }
+    let _ = write!(o, "pub static {id}: ::soft3d::mesh::Mesh<'static> = ");
+    for (depth, (step, _)) in steps.iter().enumerate() {
+        let pad = "    ".repeat(depth);
+        let _ = writeln!(o, "match {step} {{\n{pad}    ::core::result::Result::Ok(mesh) => {}", if depth + 1 == steps.len() { "mesh," } else { "" });
+    }
+    for (depth, (_, message)) in steps.iter().enumerate().rev() {
+        let pad = "    ".repeat(depth);
+        let _ = writeln!(o, "{pad}    ::core::result::Result::Err(_) => ::core::panic!(\"{message}\"),\n{pad}}}{}", if depth == 0 { ";\n" } else { "," });
+    }
     let _ = writeln!(o, "/// Model matrix of mesh {name} (rows, column vectors: `T · R · S`).\n{ALLOW_FLOATS}");
     let _ = writeln!(o, "pub const {id}_MODEL: {MAT4} = {};", mat4(&m.model));
     match material {

@@ -19,6 +19,8 @@ options:
                                texel storage (default rgb565); none skips textures
       --max-texture-size N     scale textures down to at most N texels a side
       --prefix NAME            prepend NAME_ to every generated item
+      --face-planes            emit face planes (16 bytes a triangle): back faces
+                               are then culled before the vertex stage (FPU parts)
   -h, --help                   this text";
 
 struct Args {
@@ -80,6 +82,7 @@ fn parse(args: &[String]) -> Result<Option<Args>, String> {
                 _ => return Err(format!("--max-texture-size takes a positive number, not '{value}'")),
             },
             "--prefix" => options.prefix = value,
+            "--face-planes" => options.face_planes = true,
             f if f.starts_with('-') && f.len() > 1 => return Err(format!("unknown option {f}")),
             _ => {
                 if input.replace(PathBuf::from(arg)).is_some() {

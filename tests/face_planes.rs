@@ -1,0 +1,107 @@
+//! Baked face planes change how a frame is computed, not what it shows:
+//! with them, back faces are culled in model space before the vertex
+//! stage and vertices only back faces use are skipped; the frames must be
+//! the same pixels as without them, for every camera tried (inside the
+//! mesh's bounds, at its surface, far away, mirrored models), in both
+//! numeric modes. (Only with the `face-planes` feature, which `simulator` includes.)
+#![cfg(feature = "face-planes")]
+
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use soft3d::effect::Gouraud;
+use soft3d::host::Image;
+use soft3d::math::{Mat4, Vec3};
+use soft3d::mesh::{face_plane, FacePlane, Mesh, MeshData, MeshError};
+use soft3d::{Camera, FixedPoint, FloatingPoint, FrameStats, HostRenderer, Lights, Material, Settings};
+
+fn planes_of(mesh: &Mesh<'_>) -> Vec<FacePlane> {
+    mesh.indices()
+        .chunks_exact(3)
+        .map(|t| face_plane(mesh.position(t[0] as usize), mesh.position(t[1] as usize), mesh.position(t[2] as usize)))
+        .collect()
+}
+
+fn render<S: Settings>(mesh: &Mesh<'_>, camera: &Camera, model: &Mat4) -> (Image<Rgb565>, FrameStats) {
+    let mut r: HostRenderer<Rgb565, 3, S> = HostRenderer::new(160, 120, 16, 8192, 16384, Rgb565::BLACK).unwrap();
+    let material = Material::new(Gouraud).with_color(Rgb888::new(255, 160, 0));
+    let mut frame = r.begin_frame(camera, &Lights::default(), Rgb565::BLACK);
+    frame.draw(mesh, model, &material).unwrap();
+    let mut img = Image::new(160, 120, Rgb565::MAGENTA);
+    let Ok(stats) = frame.finish(&mut img);
+    (img, stats)
+}
+
+/// Eyes around a mesh of radius `r`: outside, inside its bounds, at its
+/// surface, far away.
+const EYES: [(f32, f32, f32); 6] =
+    [(0.0, 0.5, -4.0), (3.0, -2.0, 1.5), (0.2, 0.1, -0.3), (1.1, 0.0, 0.0), (-40.0, 25.0, 60.0), (0.0, 3.0, 0.01)];
+
+fn same_frames<S: Settings>(mesh: &Mesh<'_>, planes: &[FacePlane], name: &str) {
+    let with = mesh.with_face_planes(planes).unwrap();
+    let models = [Mat4::IDENTITY, Mat4::rotation_y(0.7) * Mat4::scaling(Vec3::new(-1.0, 1.3, 0.8))];
+    let b = mesh.bounds();
+    let mut drawn = 0;
+    for (e, &(x, y, z)) in EYES.iter().enumerate() {
+        for (m, model) in models.iter().enumerate() {
+            let camera = Camera::looking_at(b.center + Vec3::new(x, y, z) * b.radius, b.center + Vec3::new(0.1, 0.0, 0.0) * b.radius);
+            let (a, sa) = render::<S>(mesh, &camera, model);
+            let (b, sb) = render::<S>(&with, &camera, model);
+            let differ = a.pixels.iter().zip(&b.pixels).filter(|(p, q)| p != q).count();
+            assert_eq!(differ, 0, "{name}, eye {e}, model {m}: {differ} pixels differ with face planes");
+            // Far away, a back face smaller than the snapping error can
+            // snap to a front winding and be queued (covering no pixel
+            // here); culled in model space, it is not. Nothing else
+            // changes.
+            let fewer = sa.queued.checked_sub(sb.queued);
+            assert!(fewer.is_some_and(|k| k <= sa.queued / 50 + 1), "{name}, eye {e}, model {m}: {sa:?} / {sb:?}");
+            drawn += sa.queued;
+        }
+    }
+    assert!(drawn > 100, "{name}: the cameras see too little ({drawn} triangles)");
+}
+
+static TORUS: MeshData<{ soft3d::mesh::torus_vertex_count(24, 12) }, { soft3d::mesh::torus_index_count(24, 12) }> =
+    MeshData::torus(24, 12, 1.0, 0.35);
+static SPHERE: MeshData<{ soft3d::mesh::sphere_vertex_count(16, 10) }, { soft3d::mesh::sphere_index_count(16, 10) }> =
+    MeshData::uv_sphere(16, 10, 1.0);
+
+#[test]
+fn face_planes_leave_frames_unchanged() {
+    for (name, mesh) in [("torus", TORUS.mesh()), ("sphere", SPHERE.mesh())] {
+        let planes = planes_of(&mesh);
+        same_frames::<FloatingPoint>(&mesh, &planes, name);
+        same_frames::<FixedPoint>(&mesh, &planes, name);
+    }
+}
+
+#[test]
+fn face_planes_of_other_positions_are_rejected() {
+    let mesh = TORUS.mesh();
+    let mut planes = planes_of(&mesh);
+    assert_eq!(
+        mesh.with_face_planes(&planes[1..]).unwrap_err(),
+        MeshError::FacePlaneCount { planes: planes.len() - 1, triangles: mesh.triangle_count() }
+    );
+    planes[7][3] = f32::from_bits(planes[7][3].to_bits() + 1);
+    assert_eq!(mesh.with_face_planes(&planes).unwrap_err(), MeshError::FacePlane(7));
+    assert_eq!(MeshError::FacePlane(7).to_string(), "face plane 7 is not the plane of triangle 7");
+}
+
+#[test]
+fn face_planes_leave_the_blender_exports_unchanged() {
+    for file in ["torus.babylon", "monkey.babylon"] {
+        let path = format!("{}/../shared/assets/{file}", env!("CARGO_MANIFEST_DIR"));
+        let scene = match soft3d::host::scene::HostScene::load(&path) {
+            Ok(scene) => scene,
+            Err(e) => {
+                println!("skipped: {path} is not available ({e})");
+                continue;
+            }
+        };
+        for owned in &scene.meshes {
+            let mesh = owned.mesh();
+            let planes = planes_of(&mesh);
+            same_frames::<FloatingPoint>(&mesh, &planes, file);
+            same_frames::<FixedPoint>(&mesh, &planes, file);
+        }
+    }
+}
