@@ -289,6 +289,20 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
     packed(o, m.indices.iter().map(|i| i.to_string()));
     let _ = writeln!(o, "];\n");
 
+    if b.options.face_planes {
+        // Computed from the positions as the mesh stores them, by the
+        // function that checks them at compile time.
+        let stored = match &m.quantized {
+            None => Vectors::F32(&m.positions),
+            Some(q) => Vectors::I16 { steps: &q.steps.positions, scale: q.steps.position_scale, offset: q.steps.position_offset },
+        };
+        let planes =
+            m.indices.chunks_exact(3).map(|t| face_plane(stored.get(t[0] as usize), stored.get(t[1] as usize), stored.get(t[2] as usize)));
+        let _ = writeln!(o, "/// Face planes of mesh {name} (unit normal, offset), one per triangle.\n{ALLOW_FLOATS}");
+        let _ = writeln!(o, "pub static {id}_FACE_PLANES: [[f32; 4]; {}] = [", m.indices.len() / 3);
+        listed(o, planes.map(floats));
+        let _ = writeln!(o, "];\n");
+    }
     let what = match material {
         Some(mat) => format!(", material {}", quoted(&mat.name)),
         None => String::new(),
@@ -300,19 +314,6 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
             "::soft3d::mesh::Mesh::new_i16(&{id}_POSITIONS_I16, {id}_POSITION_SCALE, {id}_POSITION_OFFSET, &{id}_NORMALS_I16, &{id}_INDICES)"
         ),
     };
-    if b.options.face_planes {
-        // Computed from the positions as the mesh stores them, by the
-        // function that checks them at compile time.
-        let stored = match &m.quantized {
-            None => Vectors::F32(&m.positions),
-            Some(q) => Vectors::I16 { steps: &q.steps.positions, scale: q.steps.position_scale, offset: q.steps.position_offset },
-        };
-        let planes = m.indices.chunks_exact(3).map(|t| face_plane(stored.get(t[0] as usize), stored.get(t[1] as usize), stored.get(t[2] as usize)));
-        let _ = writeln!(o, "/// Face planes of mesh {name} (unit normal, offset), one per triangle.\n{ALLOW_FLOATS}");
-        let _ = writeln!(o, "pub static {id}_FACE_PLANES: [[f32; 4]; {}] = [", m.indices.len() / 3);
-        listed(o, planes.map(floats));
-        let _ = writeln!(o, "];\n");
-    }
     // Each optional part is one more validated step: `match step { Ok(mesh) => <next>, Err(_) => panic }`.
     let mut steps = vec![(new, format!("baked mesh {id} is invalid"))];
     if m.uvs.is_some() {
@@ -321,15 +322,24 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
     if b.options.face_planes {
         steps.push((format!("mesh.with_face_planes(&{id}_FACE_PLANES)"), format!("baked mesh {id}: bad face planes")));
     }
-    let _ = write!(o, "pub static {id}: ::soft3d::mesh::Mesh<'static> = ");
-    for (depth, (step, _)) in steps.iter().enumerate() {
+    let _ = write!(o, "pub static {id}: ::soft3d::mesh::Mesh<'static> = match {} {{", steps[0].0);
+    for depth in 1..=steps.len() {
         let pad = "    ".repeat(depth);
-        let _ = writeln!(o, "match {step} {{\n{pad}    ::core::result::Result::Ok(mesh) => {}", if depth + 1 == steps.len() { "mesh," } else { "" });
+        match steps.get(depth) {
+            Some((step, _)) => {
+                let _ = write!(o, "\n{pad}::core::result::Result::Ok(mesh) => match {step} {{");
+            }
+            None => {
+                let _ = write!(o, "\n{pad}::core::result::Result::Ok(mesh) => mesh,");
+            }
+        }
     }
     for (depth, (_, message)) in steps.iter().enumerate().rev() {
         let pad = "    ".repeat(depth);
-        let _ = writeln!(o, "{pad}    ::core::result::Result::Err(_) => ::core::panic!(\"{message}\"),\n{pad}}}{}", if depth == 0 { ";\n" } else { "," });
+        let end = if depth == 0 { ";" } else { "," };
+        let _ = write!(o, "\n{pad}    ::core::result::Result::Err(_) => ::core::panic!(\"{message}\"),\n{pad}}}{end}");
     }
+    let _ = writeln!(o, "\n");
     let _ = writeln!(o, "/// Model matrix of mesh {name} (rows, column vectors: `T · R · S`).\n{ALLOW_FLOATS}");
     let _ = writeln!(o, "pub const {id}_MODEL: {MAT4} = {};", mat4(&m.model));
     match material {

@@ -393,14 +393,20 @@ fn cli_exit_codes() {
     let out = dir.join("out.rs");
     let (s, o) = (scene.to_str().unwrap(), out.to_str().unwrap());
 
-    let (code, stdout, stderr) = cli(&[s, "-o", o, "--quantize", "i16", "--texture-format=palette8", "--prefix", "inline"]);
+    let (code, stdout, stderr) =
+        cli(&[s, "-o", o, "--quantize", "i16", "--texture-format=palette8", "--prefix", "inline", "--face-planes"]);
     assert_eq!(code, 0, "{stderr}");
     assert!(
         stdout.contains("mesh 'Tri angle' (TRI_ANGLE): 3 vertices, 1 triangles") && stdout.contains("i16 positions: error max"),
         "{stdout}"
     );
     assert!(stderr.contains("warning: mesh 'empty' has no triangles"), "{stderr}");
-    assert!(std::fs::read_to_string(&out).unwrap().contains("pub static INLINE_TRI_ANGLE_POSITIONS_I16"));
+    let source = std::fs::read_to_string(&out).unwrap();
+    assert!(source.contains("pub static INLINE_TRI_ANGLE_POSITIONS_I16"));
+    assert!(
+        source.contains("pub static INLINE_TRI_ANGLE_FACE_PLANES: [[f32; 4]; 1]")
+            && source.contains("with_face_planes(&INLINE_TRI_ANGLE_FACE_PLANES)")
+    );
 
     for bad in
         [&[][..], &[s][..], &[s, "-o"][..], &[s, "-o", o, "--quantize", "f16"][..], &[s, "-o", o, "--frobnicate"][..], &[s, s, "-o", o][..]]

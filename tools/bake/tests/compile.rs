@@ -4,7 +4,9 @@
 //! exactly the baked bits: the shared assets are parsed again at run time
 //! with `soft3d::babylon` inside that crate's tests and compared bit for
 //! bit, the i16 meshes' compile-time dequantization is compared with
-//! `soft3d_bake::dequantize`, and each scene is rendered.
+//! `soft3d_bake::dequantize`, and each scene is rendered. The `i16` bakes
+//! carry face planes, which `Mesh::with_face_planes` checks against the
+//! dequantized positions at compile time.
 //!
 //! The crate is written under cargo's per-target temporary directory and
 //! built with its own target directory (the outer build's is locked while
@@ -365,6 +367,7 @@ fn generated_source_compiles_and_holds_the_baked_bits() {
             quantize: Quantize::I16,
             texture_format: TextureFormat::Palette8,
             prefix: "small".into(),
+            face_planes: true,
             ..Options::default()
         }),
         runtime_source: None,
@@ -378,8 +381,13 @@ fn generated_source_compiles_and_holds_the_baked_bits() {
             runtime_source: Some(path.clone()),
             quantized_source: None,
         });
-        let i16 =
-            Options { quantize: Quantize::I16, texture_format: TextureFormat::Palette8, max_texture_size: Some(64), ..Options::default() };
+        let i16 = Options {
+            quantize: Quantize::I16,
+            texture_format: TextureFormat::Palette8,
+            max_texture_size: Some(64),
+            face_planes: true,
+            ..Options::default()
+        };
         modules.push(Module {
             name: format!("{name}_i16"),
             baked: bake(&path, &i16).unwrap(),
