@@ -61,27 +61,32 @@ pub fn sphere_in_frustum(view_proj: &Mat4, center: Vec3, radius: f32) -> SphereT
 }
 
 /// Back-face culling in model space, before the vertex stage, from a
-/// mesh's baked [face planes](crate::mesh::Mesh::with_face_planes).
+/// mesh's baked [face planes](crate::mesh::Mesh::with_face_planes), in
+/// integers.
 ///
 /// A triangle's winding on screen is the side of its plane the eye is on.
 /// With `A` the rows `x`, `y`, `w` of the model-view-projection matrix,
 /// `det[A p̂a, A p̂b, A p̂c]` (`p̂ = (p, 1)`), whose sign is the winding for
-/// vertices in front of the eye (`w > 0`), equals `-(n · g - gw d)` for
-/// the plane `n · p = d` through them, where `(g, gw)` is the vector of
-/// `A`'s 3×3 minors: the eye in homogeneous form (`gw = 0` for an
-/// orthographic camera, a mirroring model matrix flips its sign). So a
-/// face is clockwise, front, where `n · g - gw d > 0`.
+/// vertices in front of the eye (`w > 0`), equals `-(n · g - gw n · a)` for
+/// the triangle's normal `n`, where `(g, gw)` is the vector of `A`'s 3×3
+/// minors: the eye in homogeneous form (`gw = 0` for an orthographic
+/// camera; a mirroring model matrix flips its sign). So a face is
+/// clockwise, front, where `n · g - gw n · a > 0`. With the planes' offsets
+/// `δ = (n · a - n · c) / r` from the bounds' center `c` (radius `r`), that
+/// is `n · h - k δ` for `h = g - gw c` and `k = gw r`: four products of
+/// 15-bit numbers a face, `h` and `k` scaled once per draw call.
 ///
-/// Only faces turned away by a margin are culled here: `n · g - gw d <
-/// -T`, with `T` the margin times an upper bound of `|g - gw p|` over the
-/// mesh's bounding sphere. That is, faces seen at less than [`EDGE_ON`]
-/// from edge-on are left to the exact test on snapped screen coordinates,
-/// where snapping decides their winding.
+/// Only faces turned away by a margin are culled here: `n · h - k δ <
+/// -T`, with `T` the margin times `|h| + |k|` (at least `|g - gw p|` for
+/// any point `p` of the bounds) plus a bound of the rounding. That is,
+/// faces seen at less than [`EDGE_ON`] from edge-on are left to the exact
+/// test on snapped screen coordinates, where snapping decides their
+/// winding.
 #[derive(Clone, Copy, Debug)]
 pub struct BackFaceTest {
-    g: [f32; 3],
-    gw: f32,
-    threshold: f32,
+    h: [i32; 3],
+    k: i32,
+    threshold: i32,
 }
 
 /// The sine of the angle from edge-on within which [`BackFaceTest`] leaves
@@ -90,8 +95,9 @@ pub const EDGE_ON: f32 = 1.0 / 32.0;
 
 impl BackFaceTest {
     /// The test for a mesh of bounds `bounds` drawn with model-view-projection
-    /// `mvp`; `None` if it is not finite. Inlined: a call would take the
-    /// matrix's address, which costs the vertex loop registers.
+    /// `mvp`; `None` if it is not finite or the eye is undefined. Inlined:
+    /// a call would take the matrix's address, which costs the vertex loop
+    /// registers.
     #[inline(always)]
     pub fn new(mvp: &Mat4, bounds: Sphere) -> Option<Self> {
         let m = &mvp.m;
@@ -109,17 +115,37 @@ impl BackFaceTest {
                 + e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0))
         };
         let (g, gw) = ([-minor(0), minor(1), -minor(2)], minor(3));
-        let to_center = Vec3::new(g[0] - gw * bounds.center.x, g[1] - gw * bounds.center.y, g[2] - gw * bounds.center.z);
-        let threshold = EDGE_ON * (to_center.length() + gw.abs() * bounds.radius);
-        let finite = g.iter().all(|v| v.is_finite()) && gw.is_finite() && threshold.is_finite();
-        finite.then_some(Self { g, gw, threshold })
+        let c = bounds.center;
+        let h = [g[0] - gw * c.x, g[1] - gw * c.y, g[2] - gw * c.z];
+        let k = gw * bounds.radius;
+        let big = h[0].abs().max(h[1].abs()).max(h[2].abs()).max(k.abs());
+        // Not finite (NaN fails the test too), or no eye at all.
+        if !(big > 0.0 && big <= f32::MAX) {
+            return None;
+        }
+        // Scaled to at most 2^14 - 1: with plane steps of at most 2^14 (a
+        // unit normal; |δ| <= 1 up to rounding, at most 2^15 clamped), each
+        // product is below 2^29 and the sum of four below 2^31.
+        let s = 16383.0 / big;
+        // To nearest (`as` truncates; the values are within ±16383.5).
+        let round = |v: f32| {
+            let r = v * s;
+            (if r < 0.0 { r - 0.5 } else { r + 0.5 }) as i32
+        };
+        let (hi, ki) = ([round(h[0]), round(h[1]), round(h[2])], round(k));
+        // The exact `(n · h - k δ) 2^14 s` and the integer sum differ by the
+        // rounding of the eight factors: at most 4 (2^13 + 2^13 + 1) < 2^16.
+        let length = crate::math::Vec3::new(h[0], h[1], h[2]).length() + k.abs();
+        let threshold = EDGE_ON * length * s * crate::mesh::FACE_PLANE_ONE as f32 + 65536.0;
+        Some(Self { h: hi, k: ki, threshold: threshold as i32 })
     }
 
     /// Whether the face of plane `p` is turned away from the eye by more
-    /// than the margin. False for a NaN or zero plane.
+    /// than the margin. False for a zero plane.
     #[inline(always)]
     pub fn culls(&self, p: &FacePlane) -> bool {
-        p[0] * self.g[0] + p[1] * self.g[1] + p[2] * self.g[2] - p[3] * self.gw < -self.threshold
+        let t = p[0] as i32 * self.h[0] + p[1] as i32 * self.h[1] + p[2] as i32 * self.h[2] - p[3] as i32 * self.k;
+        t < -self.threshold
     }
 }
 
@@ -321,7 +347,7 @@ mod tests {
                 };
                 let p = [point(), point(), point()];
                 let Some(area) = window_area2(&mvp, p) else { continue };
-                let plane = crate::mesh::face_plane(p[0], p[1], p[2]);
+                let plane = crate::mesh::face_plane(p[0], p[1], p[2], bounds);
                 if test.culls(&plane) {
                     assert!(area < 0.0, "case {case}: a front face {p:?} (area {area}) was culled");
                     culled += 1;

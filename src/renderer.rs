@@ -359,8 +359,8 @@ pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
 }
 
 /// Whether draw calls cull back faces in model space where meshes have
-/// face planes (the `face-planes` feature, on parts with an FPU).
-const CULL_IN_MODEL_SPACE: bool = cfg!(feature = "face-planes") && crate::math::HARD_FLOAT;
+/// face planes (the `face-planes` feature).
+const CULL_IN_MODEL_SPACE: bool = cfg!(feature = "face-planes");
 
 /// A triangle in flight through assembly: its vertices' buffer indices.
 type Corners = [u16; 3];
@@ -406,7 +406,7 @@ where
     /// [`FrameStats`].
     ///
     /// With the `face-planes` feature, [face planes](Mesh::with_face_planes)
-    /// and back-face culling (on a part with an FPU), back faces are culled in model space
+    /// and back-face culling, back faces are culled in model space
     /// before the vertex stage, which then skips the vertices only they
     /// use; the frame is the same.
     #[inline]
@@ -419,8 +419,7 @@ where
         // Two copies of the draw call, with and without culling in model
         // space: in one, the marking cost meshes without face planes 2% of
         // a frame (`f32` M4F; the vertex loop spilled registers). The copy
-        // costs flash, so it is a feature. Without an FPU each plane test
-        // would be float library calls.
+        // costs flash, so it is a feature.
         if CULL_IN_MODEL_SPACE && material.cull == Cull::Back && mesh.face_planes().is_some() {
             self.draw_mesh::<E, P, D, true>(mesh, model, material)
         } else {

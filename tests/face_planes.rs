@@ -16,7 +16,7 @@ use soft3d::{Camera, FixedPoint, FloatingPoint, FrameStats, HostRenderer, Lights
 fn planes_of(mesh: &Mesh<'_>) -> Vec<FacePlane> {
     mesh.indices()
         .chunks_exact(3)
-        .map(|t| face_plane(mesh.position(t[0] as usize), mesh.position(t[1] as usize), mesh.position(t[2] as usize)))
+        .map(|t| face_plane(mesh.position(t[0] as usize), mesh.position(t[1] as usize), mesh.position(t[2] as usize), mesh.bounds()))
         .collect()
 }
 
@@ -81,7 +81,7 @@ fn face_planes_of_other_positions_are_rejected() {
         mesh.with_face_planes(&planes[1..]).unwrap_err(),
         MeshError::FacePlaneCount { planes: planes.len() - 1, triangles: mesh.triangle_count() }
     );
-    planes[7][3] = f32::from_bits(planes[7][3].to_bits() + 1);
+    planes[7][3] += 1;
     assert_eq!(mesh.with_face_planes(&planes).unwrap_err(), MeshError::FacePlane(7));
     assert_eq!(MeshError::FacePlane(7).to_string(), "face plane 7 is not the plane of triangle 7");
 }

@@ -24,10 +24,7 @@ fn main() {
     // full size), which the accuracy study draws.
     for (file, rust) in scenes {
         let texture_format = if file == "monkey.babylon" { soft3d_bake::TextureFormat::Rgb565 } else { soft3d_bake::TextureFormat::None };
-        // Face planes where there is an FPU to test them (soft3d ignores
-        // them elsewhere: they would be flash for nothing).
-        let face_planes = std::env::var("TARGET").is_ok_and(|t| t.ends_with("eabihf"));
-        let options = soft3d_bake::Options { texture_format, face_planes, ..Default::default() };
+        let options = soft3d_bake::Options { texture_format, face_planes: true, ..Default::default() };
         match soft3d_bake::bake_file(&assets.join(file), &out.join(rust), &options) {
             Ok(report) => {
                 for input in report.inputs {

@@ -177,26 +177,52 @@ pub struct Mesh<'a> {
     planes: Option<&'a [FacePlane]>,
 }
 
-/// A triangle's plane in model space: unit normal `n` (`[0..3]`) and
-/// offset `d = n · a` (`[3]`), from [`face_plane`]. Baked with a mesh
-/// ([`Mesh::with_face_planes`]), they let a draw call cull back faces
-/// before the vertex stage and skip the vertices only back faces use.
-pub type FacePlane = [f32; 4];
+/// A triangle's plane in model space, in `i16` steps of 2^-14: its unit
+/// normal `n` (`[0..3]`) and `(n · a - n · c) / r` (`[3]`), the plane's
+/// signed distance from the center `c` of the mesh's bounding sphere in
+/// units of its radius `r` (within ±1). From [`face_plane`]. Baked with a
+/// mesh ([`Mesh::with_face_planes`]), they let a draw call cull back faces
+/// before the vertex stage and skip the vertices only back faces use, in
+/// integer arithmetic (no FPU needed).
+pub type FacePlane = [i16; 4];
 
-/// The plane of triangle `(a, b, c)`: its unit normal `(b - a) × (c - a)`
-/// normalized, and `n · a`, computed in `f64` and rounded once. Zero for a
-/// degenerate triangle (which no test then culls).
-pub const fn face_plane(a: Vec3, b: Vec3, c: Vec3) -> FacePlane {
+/// Steps of a [`FacePlane`] component per unit.
+pub const FACE_PLANE_ONE: f64 = 16384.0;
+
+/// The plane of triangle `(a, b, c)` of a mesh bounded by `bounds`: the
+/// unit normal of `(b - a) × (c - a)` and its offset from the bounds'
+/// center, computed in `f64` and rounded once to steps of 2^-14. Zero for a
+/// degenerate triangle or empty bounds (which no test then culls).
+pub const fn face_plane(a: Vec3, b: Vec3, c: Vec3, bounds: Sphere) -> FacePlane {
     let (a, b, c) = ([a.x as f64, a.y as f64, a.z as f64], [b.x as f64, b.y as f64, b.z as f64], [c.x as f64, c.y as f64, c.z as f64]);
     let (u, v) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
     let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
     let len = shapes::const_sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    let r = bounds.radius as f64;
     // Not finite or too small to normalize: no plane (never culled).
-    if !(len > 1e-300 && len < f64::MAX) {
-        return [0.0; 4];
+    if !(len > 1e-300 && len < f64::MAX && r > 0.0 && r < f64::MAX) {
+        return [0; 4];
     }
     let n = [n[0] / len, n[1] / len, n[2] / len];
-    [n[0] as f32, n[1] as f32, n[2] as f32, (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) as f32]
+    let o = [bounds.center.x as f64, bounds.center.y as f64, bounds.center.z as f64];
+    let offset = (n[0] * (a[0] - o[0]) + n[1] * (a[1] - o[1]) + n[2] * (a[2] - o[2])) / r;
+    [step(n[0]), step(n[1]), step(n[2]), step(offset)]
+}
+
+/// `v` in steps of 2^-14, rounded to nearest and clamped to `i16` (NaN: 0).
+const fn step(v: f64) -> i16 {
+    let s = v * FACE_PLANE_ONE;
+    if s.is_nan() {
+        return 0;
+    }
+    if s <= -32768.0 {
+        return i16::MIN;
+    }
+    if s >= 32767.0 {
+        return i16::MAX;
+    }
+    // Round half away from zero (`as` truncates toward zero).
+    (if s < 0.0 { s - 0.5 } else { s + 0.5 }) as i16
 }
 
 impl<'a> Mesh<'a> {
@@ -278,12 +304,11 @@ impl<'a> Mesh<'a> {
         let mut t = 0;
         while t < triangles {
             let i = &self.indices;
-            let expect =
-                face_plane(self.position(i[3 * t] as usize), self.position(i[3 * t + 1] as usize), self.position(i[3 * t + 2] as usize));
+            let (a, b, c) = (self.position(i[3 * t] as usize), self.position(i[3 * t + 1] as usize), self.position(i[3 * t + 2] as usize));
+            let expect = face_plane(a, b, c, self.bounds);
             let (p, mut k) = (&planes[t], 0);
             while k < 4 {
-                // Bit equality: NaN planes are rejected too.
-                if p[k].to_bits() != expect[k].to_bits() {
+                if p[k] != expect[k] {
                     return Err(MeshError::FacePlane(t));
                 }
                 k += 1;
@@ -365,8 +390,10 @@ const fn all_unit_or_zero(v: &Vectors<'_>) -> bool {
     true
 }
 
-/// Center of the bounding box, radius to the farthest finite vertex.
-const fn bounding_sphere(p: &Vectors<'_>) -> Sphere {
+/// The bounding sphere a mesh of these positions carries
+/// ([`Mesh::bounds`]): center of the bounding box, radius to the farthest
+/// finite vertex (rounded up).
+pub const fn bounding_sphere(p: &Vectors<'_>) -> Sphere {
     let (mut lo, mut hi) = ([f32::MAX; 3], [f32::MIN; 3]);
     let mut i = 0;
     while i < p.len() {

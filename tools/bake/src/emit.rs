@@ -9,7 +9,7 @@
 
 use crate::{Baked, BakedMesh, Quantize, Texels, NORMAL_SCALE};
 use soft3d::math::{Mat4, Vec2, Vec3};
-use soft3d::mesh::{face_plane, Vectors};
+use soft3d::mesh::{bounding_sphere, face_plane, Vectors};
 use soft3d::Cull;
 use std::fmt::Write as _;
 
@@ -296,11 +296,14 @@ fn mesh(o: &mut String, b: &Baked, m: &BakedMesh, p: &str) {
             None => Vectors::F32(&m.positions),
             Some(q) => Vectors::I16 { steps: &q.steps.positions, scale: q.steps.position_scale, offset: q.steps.position_offset },
         };
-        let planes =
-            m.indices.chunks_exact(3).map(|t| face_plane(stored.get(t[0] as usize), stored.get(t[1] as usize), stored.get(t[2] as usize)));
-        let _ = writeln!(o, "/// Face planes of mesh {name} (unit normal, offset), one per triangle.\n{ALLOW_FLOATS}");
-        let _ = writeln!(o, "pub static {id}_FACE_PLANES: [[f32; 4]; {}] = [", m.indices.len() / 3);
-        listed(o, planes.map(floats));
+        let bounds = bounding_sphere(&stored);
+        let planes = m.indices.chunks_exact(3).map(|t| {
+            let p = face_plane(stored.get(t[0] as usize), stored.get(t[1] as usize), stored.get(t[2] as usize), bounds);
+            format!("[{}, {}, {}, {}]", p[0], p[1], p[2], p[3])
+        });
+        let _ = writeln!(o, "/// Face planes of mesh {name} (unit normal, offset from the bounds' center), one per triangle.");
+        let _ = writeln!(o, "pub static {id}_FACE_PLANES: [[i16; 4]; {}] = [", m.indices.len() / 3);
+        packed(o, planes);
         let _ = writeln!(o, "];\n");
     }
     let what = match material {

@@ -85,9 +85,9 @@ pub struct Options {
     /// Prepended (as `PREFIX_`) to every generated item, so that several
     /// scenes can share a module. Must be an identifier; it is upper-cased.
     pub prefix: String,
-    /// Emit each mesh's face planes (16 bytes of flash a triangle), with
+    /// Emit each mesh's face planes (8 bytes of flash a triangle), with
     /// which draw calls culling back faces do so before the vertex stage
-    /// on parts with an FPU (see `soft3d::mesh::Mesh::with_face_planes`).
+    /// (see `soft3d::mesh::Mesh::with_face_planes`).
     pub face_planes: bool,
 }
 

@@ -19,8 +19,8 @@ options:
                                texel storage (default rgb565); none skips textures
       --max-texture-size N     scale textures down to at most N texels a side
       --prefix NAME            prepend NAME_ to every generated item
-      --face-planes            emit face planes (16 bytes a triangle): back faces
-                               are then culled before the vertex stage (FPU parts)
+      --face-planes            emit face planes (8 bytes a triangle): back faces
+                               are then culled before the vertex stage
   -h, --help                   this text";
 
 struct Args {

@@ -404,7 +404,7 @@ fn cli_exit_codes() {
     let source = std::fs::read_to_string(&out).unwrap();
     assert!(source.contains("pub static INLINE_TRI_ANGLE_POSITIONS_I16"));
     assert!(
-        source.contains("pub static INLINE_TRI_ANGLE_FACE_PLANES: [[f32; 4]; 1]")
+        source.contains("pub static INLINE_TRI_ANGLE_FACE_PLANES: [[i16; 4]; 1]")
             && source.contains("with_face_planes(&INLINE_TRI_ANGLE_FACE_PLANES)")
     );
 
