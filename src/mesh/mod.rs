@@ -456,6 +456,23 @@ mod tests {
     }
 
     #[test]
+    fn face_planes_are_unit_normals_and_offsets_in_steps() {
+        let bounds = Sphere { center: Vec3::ZERO, radius: 2.0 };
+        let (a, b, c) = (Vec3::new(0.0, 0.0, 1.0), Vec3::new(1.0, 0.0, 1.0), Vec3::new(0.0, 1.0, 1.0));
+        // Normal +z (one is 2^14 steps), the plane half a radius from the center.
+        assert_eq!(face_plane(a, b, c, bounds), [0, 0, 16384, 8192]);
+        // Wound the other way round: the other side.
+        assert_eq!(face_plane(a, c, b, bounds), [0, 0, -16384, -8192]);
+        // At 45°: 16384 / √2 = 11585.24 rounds to 11585.
+        let d = Vec3::new(0.0, 1.0, 2.0);
+        assert_eq!(face_plane(a, b, d, bounds), [0, -11585, 11585, 5793]);
+        // Degenerate or not finite: no plane.
+        assert_eq!(face_plane(a, b, Vec3::new(2.0, 0.0, 1.0), bounds), [0; 4]);
+        assert_eq!(face_plane(a, b, Vec3::new(f32::NAN, 0.0, 0.0), bounds), [0; 4]);
+        assert_eq!(face_plane(a, b, c, Sphere { center: Vec3::ZERO, radius: 0.0 }), [0; 4]);
+    }
+
+    #[test]
     fn bounding_sphere_contains_every_vertex() {
         const M: Mesh<'static> = match Mesh::new(&P, &N, &[0, 1, 2]) {
             Ok(m) => m,
