@@ -111,7 +111,8 @@ pub struct FrameStats {
     pub meshes_culled: u32,
     /// Meshes skipped whole: non-finite model or view-projection matrix.
     pub meshes_invalid: u32,
-    /// Vertices transformed.
+    /// Vertices of the meshes drawn (not culled whole). With face planes,
+    /// those only back faces use are counted but not transformed.
     pub vertices: u32,
     /// Triangles submitted.
     pub triangles: u32,
@@ -408,7 +409,9 @@ where
     /// With the `face-planes` feature, [face planes](Mesh::with_face_planes)
     /// and back-face culling, back faces are culled in model space
     /// before the vertex stage, which then skips the vertices only they
-    /// use; the frame is the same.
+    /// use. The frame is the same, but for back faces that snapping turned
+    /// front-facing (tiny ones, or with under 2 sub-pixel bits), which are
+    /// then not drawn.
     #[inline]
     pub fn draw<E, P, D>(&mut self, mesh: &Mesh<'_>, model: &Mat4, material: &'m Material<E, P, D>) -> Result<(), DrawError>
     where
@@ -854,10 +857,8 @@ where
 
 /// Marks the vertex slots of a mesh that only faces `test` culls use
 /// (flagged [`vertex::CULLED`]), so that the vertex stage skips them and
-/// their triangles are culled at assembly. Out of line, and given the
-/// test by value: given the matrix by reference, its escape kept the
-/// vertex loop from reloading the matrix where used (+2% on a mesh without
-/// planes, `f32` M4F, from spilled registers).
+/// their triangles are culled at assembly (a vertex no face uses is
+/// skipped too). Out of line: one copy per `V`, not one per material.
 #[inline(never)]
 fn mark_unused_vertices<const V: usize>(test: BackFaceTest, mesh: &Mesh<'_>, slots: &mut [ScreenVertex<V>]) {
     for slot in slots.iter_mut() {

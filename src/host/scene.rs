@@ -9,7 +9,7 @@ use crate::blend::{AlphaBlend, Opaque};
 use crate::effect::{BlinnPhong, Color, Gouraud, Textured};
 use crate::material::{Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
-use crate::mesh::{Mesh, Sphere};
+use crate::mesh::{bounding_sphere, face_plane, FacePlane, Mesh, Sphere, Vectors};
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, Lights};
 use crate::settings::Settings;
@@ -65,18 +65,29 @@ pub struct OwnedMesh {
     pub model: Mat4,
     /// Index into [`HostScene::materials`].
     pub material: Option<usize>,
+    /// Face planes, as `tools/bake --face-planes` bakes them (so that the
+    /// host draws what a firmware with baked planes draws).
+    pub planes: Vec<FacePlane>,
 }
 
 impl OwnedMesh {
-    /// The mesh view of the arrays.
+    /// The mesh view of the arrays, with its face planes.
     pub fn mesh(&self) -> Mesh<'_> {
         // The arrays came from a validated mesh, so this cannot fail; an
         // empty mesh stands in if it somehow did.
         let m = Mesh::new(&self.positions, &self.normals, &self.indices).unwrap_or(EMPTY);
-        match &self.uvs {
+        let m = match &self.uvs {
             Some(uv) => m.with_uvs(uv).unwrap_or(m),
             None => m,
-        }
+        };
+        m.with_face_planes(&self.planes).unwrap_or(m)
+    }
+
+    /// The planes of the mesh's triangles ([`face_plane`]).
+    fn face_planes(positions: &[Vec3], indices: &[u16]) -> Vec<FacePlane> {
+        let bounds = bounding_sphere(&Vectors::F32(positions));
+        let p = |i: u16| positions.get(i as usize).copied().unwrap_or(Vec3::ZERO);
+        indices.chunks_exact(3).map(|t| face_plane(p(t[0]), p(t[1]), p(t[2]), bounds)).collect()
     }
 }
 
@@ -185,14 +196,19 @@ impl HostScene {
             .collect();
         let meshes = parser
             .iter()
-            .map(|s| OwnedMesh {
-                name: s.info.name.to_string(),
-                positions: (0..s.mesh.vertex_count()).map(|i| s.mesh.position(i)).collect(),
-                normals: (0..s.mesh.vertex_count()).map(|i| s.mesh.normal(i)).collect(),
-                uvs: s.mesh.uvs().map(<[Vec2]>::to_vec),
-                indices: s.mesh.indices().to_vec(),
-                model: s.model,
-                material: s.info.material(),
+            .map(|s| {
+                let positions: Vec<Vec3> = (0..s.mesh.vertex_count()).map(|i| s.mesh.position(i)).collect();
+                let indices = s.mesh.indices().to_vec();
+                OwnedMesh {
+                    name: s.info.name.to_string(),
+                    planes: OwnedMesh::face_planes(&positions, &indices),
+                    normals: (0..s.mesh.vertex_count()).map(|i| s.mesh.normal(i)).collect(),
+                    uvs: s.mesh.uvs().map(<[Vec2]>::to_vec),
+                    positions,
+                    indices,
+                    model: s.model,
+                    material: s.info.material(),
+                }
             })
             .collect();
         let lights = if parser.lights().is_empty() { Lights::default() } else { parser.to_lights() };
