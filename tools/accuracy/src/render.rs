@@ -37,8 +37,12 @@ fn renderer<C: Color, S: Settings>(scene: &Scene) -> HostRenderer<C, V, S> {
 
 fn mesh<'a>(o: &'a crate::scenes::Object) -> Mesh<'a> {
     let m = Mesh::new(&o.positions, &o.normals, &o.indices).expect("a valid mesh");
-    match &o.uvs {
+    let m = match &o.uvs {
         Some(uv) => m.with_uvs(uv).expect("one UV per vertex"),
+        None => m,
+    };
+    match &o.planes {
+        Some(planes) => m.with_face_planes(planes).expect("the mesh's own planes"),
         None => m,
     }
 }

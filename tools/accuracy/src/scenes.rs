@@ -30,6 +30,9 @@ pub struct Object {
     pub color: Rgb888,
     /// Index into [`Scene::textures`].
     pub texture: Option<usize>,
+    /// Face planes, where the firmware's mesh has them baked (the shared
+    /// files' meshes), so the host draws what the emulated core draws.
+    pub planes: Option<Vec<soft3d::mesh::FacePlane>>,
 }
 
 /// A study scene.
@@ -120,6 +123,7 @@ fn from_file(name: &'static str, about: &'static str, path: &Path) -> Result<Sce
                 model: m.model,
                 color: Rgb888::WHITE,
                 texture,
+                planes: Some(m.planes.clone()),
             }
         })
         .collect();
@@ -136,6 +140,7 @@ fn object(mesh: &soft3d::mesh::Mesh<'_>, color: Rgb888, texture: Option<usize>) 
         model: Mat4::IDENTITY,
         color,
         texture,
+        planes: mesh.face_planes().map(<[_]>::to_vec),
     }
 }
 
