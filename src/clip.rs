@@ -95,9 +95,7 @@ pub const EDGE_ON: f32 = 1.0 / 32.0;
 
 impl BackFaceTest {
     /// The test for a mesh of bounds `bounds` drawn with model-view-projection
-    /// `mvp`; `None` if it is not finite or the eye is undefined. Inlined:
-    /// a call would take the matrix's address, which costs the vertex loop
-    /// registers.
+    /// `mvp`; `None` if it is not finite or the eye is undefined.
     #[inline(always)]
     pub fn new(mvp: &Mat4, bounds: Sphere) -> Option<Self> {
         let m = &mvp.m;
