@@ -12,7 +12,7 @@
 //! clipped, in `f64` window coordinates so the rounding is far below a
 //! pixel.
 
-use crate::math::{Mat4, Vec3, Vec4};
+use crate::math::{Mat3, Mat4, Vec3, Vec4};
 use crate::mesh::{FacePlane, Sphere};
 use heapless::Vec;
 
@@ -108,9 +108,7 @@ impl BackFaceTest {
                 2 => [0, 1, 3],
                 _ => [0, 1, 2],
             };
-            let e = |r: usize, k: usize| a[r][c[k]];
-            e(0, 0) * (e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1)) - e(0, 1) * (e(1, 0) * e(2, 2) - e(1, 2) * e(2, 0))
-                + e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0))
+            Mat3 { m: a.map(|row| c.map(|k| row[k])) }.determinant()
         };
         let (g, gw) = ([-minor(0), minor(1), -minor(2)], minor(3));
         let c = bounds.center;
@@ -133,7 +131,7 @@ impl BackFaceTest {
         let (hi, ki) = ([round(h[0]), round(h[1]), round(h[2])], round(k));
         // The exact `(n · h - k δ) 2^14 s` and the integer sum differ by the
         // rounding of the eight factors: at most 4 (2^13 + 2^13 + 1) < 2^16.
-        let length = crate::math::Vec3::new(h[0], h[1], h[2]).length() + k.abs();
+        let length = Vec3::new(h[0], h[1], h[2]).length() + k.abs();
         let threshold = EDGE_ON * length * s * crate::mesh::FACE_PLANE_ONE as f32 + 65536.0;
         Some(Self { h: hi, k: ki, threshold: threshold as i32 })
     }
