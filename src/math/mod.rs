@@ -45,6 +45,25 @@ pub(crate) fn mul_wide(a: i32, b: i32) -> i64 {
     }
 }
 
+/// `a * b` as `i64`, exactly, for a 16-bit `b` (an `i16` mesh's steps):
+/// on ARMv6-M two 16×16-bit products (`a`'s halves times `b`, each within
+/// 32 bits), not the four of [`mul_wide`].
+#[inline(always)]
+pub(crate) fn mul_wide_short(a: i32, b: i16) -> i64 {
+    if cfg!(soft3d_armv6m) {
+        mul_wide_short_by_halves(a, b)
+    } else {
+        a as i64 * b as i64
+    }
+}
+
+#[inline(always)]
+fn mul_wide_short_by_halves(a: i32, b: i16) -> i64 {
+    // |a >> 16| <= 2^15 and a & 0xFFFF < 2^16: both products by b fit 32 bits.
+    let b = b as i32;
+    ((((a >> 16) * b) as i64) << 16) + ((a & 0xFFFF) * b) as i64
+}
+
 /// `a * b + c * d` exactly. On ARMv6-M one call of two products by halves
 /// costs less than two calls of the library's 64×64-bit multiply and,
 /// unlike products inlined at each of the triangle setup's many uses,
@@ -311,6 +330,16 @@ mod tests {
             assert_eq!(mul_wide_unsigned_by_halves(a, b), a as u64 * b as u64, "{a} * {b}");
         }
         assert_eq!(mul_wide_unsigned_by_halves(u32::MAX, u32::MAX), u32::MAX as u64 * u32::MAX as u64);
+        // By a 16-bit factor.
+        for &a in &edges {
+            for b in [i16::MIN, i16::MIN + 1, -1, 0, 1, i16::MAX, 12345] {
+                assert_eq!(mul_wide_short_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
+            }
+        }
+        for _ in 0..100_000 {
+            let (a, b) = (next() as i32, next() as i16);
+            assert_eq!(mul_wide_short_by_halves(a, b), a as i64 * b as i64, "{a} * {b}");
+        }
         // Sums of two, with second factors short (below 2^15) or not.
         let extremes = [i32::MIN, i32::MAX, -(1 << 15), (1 << 15) - 1, 1 << 15, 0, -1];
         for &a in &extremes {

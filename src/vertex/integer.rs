@@ -31,7 +31,7 @@
 //! clipper too.
 
 use super::{all_finite, BEHIND_NEAR, BEYOND_FAR, NOT_FINITE, OUTSIDE_GUARD};
-use crate::math::{mul_wide, reciprocal_q61, Mat4, Vec4};
+use crate::math::{mul_wide, mul_wide_short, reciprocal_q61, Mat4, Vec4};
 use crate::mesh::{Sphere, Vectors};
 use crate::raster::{guard, ScreenVertex};
 
@@ -210,27 +210,31 @@ impl<'a> IntegerProjection<'a> {
         })
     }
 
-    /// Input vector of vertex `i`, `None` if not finite (or past the end).
+    /// Clip coordinates of vertex `i` in integers (the rows' units),
+    /// `None` if its input is not finite (or past the end).
     #[inline(always)]
-    fn input(&self, i: usize) -> Option<[i32; 3]> {
+    fn clip(&self, i: usize) -> Option<[i32; 4]> {
         match self.input {
             Input::F32(p, k) => {
                 let v = p.get(i)?;
-                Some([scaled_rounded(v.x, k, INPUT_MAX)?, scaled_rounded(v.y, k, INPUT_MAX)?, scaled_rounded(v.z, k, INPUT_MAX)?])
+                let p = [scaled_rounded(v.x, k, INPUT_MAX)?, scaled_rounded(v.y, k, INPUT_MAX)?, scaled_rounded(v.z, k, INPUT_MAX)?];
+                Some(self.rows_dot(|l| mul_wide(l[0], p[0]) + mul_wide(l[1], p[1]) + mul_wide(l[2], p[2])))
             }
-            Input::I16(s) => s.get(i).map(|q| q.map(|v| (v as i32) << 15)),
+            // The input is `q 2^15`: a row times the 16-bit steps, then
+            // shifted (two 16×16-bit multiplies a product on ARMv6-M, not four).
+            Input::I16(s) => {
+                let q = s.get(i)?;
+                Some(self.rows_dot(|l| (mul_wide_short(l[0], q[0]) + mul_wide_short(l[1], q[1]) + mul_wide_short(l[2], q[2])) << 15))
+            }
         }
     }
 
-    /// Clip coordinates of vertex `i` in integers: the rows' units.
+    /// The four rows from `dot(row)`, a row's products with the input.
     #[inline(always)]
-    fn clip(&self, p: [i32; 3]) -> [i32; 4] {
+    fn rows_dot(&self, dot: impl Fn(&[i32; 3]) -> i64) -> [i32; 4] {
         // The sum is below 2^60 in magnitude (the bound the scales were
         // chosen for), so the row is below 2^30.
-        let row = |r: usize| {
-            let l = &self.rows[r];
-            ((mul_wide(l[0], p[0]) + mul_wide(l[1], p[1]) + mul_wide(l[2], p[2]) + self.constant[r]) >> INPUT_BITS) as i32
-        };
+        let row = |r: usize| ((dot(&self.rows[r]) + self.constant[r]) >> INPUT_BITS) as i32;
         [row(0), row(1), row(2), row(3)]
     }
 
@@ -238,8 +242,7 @@ impl<'a> IntegerProjection<'a> {
     /// integer coordinates scaled back, so their signs and the order of
     /// z and w are those the vertex was flagged by. Zero if not finite.
     pub fn clip_position(&self, i: usize) -> Vec4 {
-        let Some(p) = self.input(i) else { return Vec4::new(0.0, 0.0, 0.0, 0.0) };
-        let c = self.clip(p);
+        let Some(c) = self.clip(i) else { return Vec4::new(0.0, 0.0, 0.0, 0.0) };
         let back = |r: usize| c[r] as f32 * pow2(-self.scale[r]);
         Vec4::new(back(0) / self.viewport[0], -back(1) / self.viewport[1], back(2), back(3))
     }
@@ -272,9 +275,8 @@ impl<'a> IntegerProjection<'a> {
     /// stored (see [`project_into`](super::project_into)).
     #[inline(always)]
     pub(super) fn project_into<const V: usize>(&self, i: usize, attrs: [f32; V], out: &mut ScreenVertex<V>) {
-        let flags = match self.input(i) {
-            Some(p) if all_finite(&attrs) => {
-                let [x, y, z, w] = self.clip(p);
+        let flags = match self.clip(i) {
+            Some([x, y, z, w]) if all_finite(&attrs) => {
                 let mut flags = 0;
                 if z < 0 {
                     flags |= BEHIND_NEAR;

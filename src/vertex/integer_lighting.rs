@@ -12,7 +12,7 @@
 //! [`IntegerLighting::new`] returns `None`.
 
 use super::integer::{f32_from_parts, scaled_rounded};
-use crate::math::mul_wide;
+use crate::math::{mul_wide, mul_wide_short};
 use crate::mesh::Vectors;
 use crate::scene::Lighting;
 use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
@@ -59,16 +59,24 @@ impl<'a> IntegerLighting<'a> {
         Some(Self { normals, ambient, sun, cap })
     }
 
-    /// The normal of vertex `i` in 30-bit fractions.
+    /// The dot product of vertex `i`'s normal, in 30-bit fractions, with
+    /// `d` (30-bit fractions too).
     #[inline(always)]
-    fn normal(&self, i: usize) -> [i32; 3] {
-        match self.normals {
+    fn dot_normal(&self, i: usize, d: [i32; 3]) -> i64 {
+        let n = match self.normals {
+            // Steps of 1/32767: 2^30 / 32767 is 32769 within 2^-30. The
+            // steps times `d` first (products by 16-bit factors), then
+            // times 32769 = 2^15 + 1.
+            Vectors::I16 { steps, .. } => {
+                let s = steps.get(i).copied().unwrap_or([0; 3]);
+                let sum = mul_wide_short(d[0], s[0]) + mul_wide_short(d[1], s[1]) + mul_wide_short(d[2], s[2]);
+                return (sum << 15) + sum;
+            }
             // Unit normals (checked when the mesh was built): finite, and
             // each component within [-1, 1] but for rounding.
             Vectors::F32(n) => n.get(i).map_or([0; 3], |n| [n.x, n.y, n.z].map(|v| scaled_rounded(v, 30, ONE).unwrap_or(0))),
-            // Steps of 1/32767: 2^30 / 32767 is 32769 within 2^-30.
-            Vectors::I16 { steps, .. } => steps.get(i).map_or([0; 3], |s| s.map(|v| v as i32 * 32769)),
-        }
+        };
+        mul_wide(n[0], d[0]) + mul_wide(n[1], d[1]) + mul_wide(n[2], d[2])
     }
 
     /// [`VertexInput::lit`](crate::effect::VertexInput::lit) of vertex
@@ -77,9 +85,8 @@ impl<'a> IntegerLighting<'a> {
     #[inline(always)]
     pub fn lit(&self, i: usize, color: Rgb888) -> [f32; 3] {
         let (direction, sun) = self.sun;
-        let n = self.normal(i);
         // Each product at most 2^60, and so is the sum (both vectors unit).
-        let dot = mul_wide(n[0], direction[0]) + mul_wide(n[1], direction[1]) + mul_wide(n[2], direction[2]);
+        let dot = self.dot_normal(i, direction);
         let facing = ((dot.clamp(0, 1 << 60) + (1 << 29)) >> 30) as i32;
         let channel = |k: usize, c: u8| {
             // Both terms below 2^31: their sum fits 32 bits unsigned.
@@ -120,7 +127,16 @@ mod tests {
             // Levels of 0 to 255 (textures), and Rgb565's channels (Gouraud).
             let rgb565 = case % 2 == 0;
             let scale = if rgb565 { Gouraud::lit_scale::<Rgb565>() } else { [1.0; 3] };
-            let integer = IntegerLighting::new(&lighting, Vectors::F32(&normals), true, scale).expect("ambient and directional light");
+            // Every third case with the normals as `i16` steps of 1/32767
+            // (what the mesh gives for them is the reference then).
+            let steps: std::vec::Vec<[i16; 3]> = normals.iter().map(|n| [n.x, n.y, n.z].map(|v| (v * 32767.0).round() as i16)).collect();
+            let vectors = if case % 3 == 0 {
+                Vectors::I16 { steps: &steps, scale: [1.0 / 32767.0; 3], offset: [0.0; 3] }
+            } else {
+                Vectors::F32(&normals)
+            };
+            let normals: std::vec::Vec<Vec3> = (0..normals.len()).map(|i| vectors.get(i)).collect();
+            let integer = IntegerLighting::new(&lighting, vectors, true, scale).expect("ambient and directional light");
             for (i, n) in normals.iter().enumerate() {
                 let color = Rgb888::new((u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8, (u(0.0, 255.9)) as u8);
                 let want = if rgb565 {
