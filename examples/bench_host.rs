@@ -13,7 +13,7 @@ use soft3d::material::{Material, PerPixel, PerSpan, Perspective};
 use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
 use soft3d::scenes::{
     demo_camera, demo_lights, draw_bench, headlight, textured, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES,
-    FILE_SCENES, TEXTURED_SCENES, WHITE,
+    FILE_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE,
 };
 use soft3d::{HostRenderer, Settings};
 
@@ -35,6 +35,18 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
     }
     for (name, scene) in files {
         file_scene(&mut r, name, mode, scene, &WHITE);
+    }
+    // Scenes quantized to i16, as the firmware bakes them.
+    for (name, file) in QUANTIZED_SCENES {
+        if let Some((_, scene)) = files.iter().find(|(n, _)| *n == file) {
+            let camera = scene.camera_or_default();
+            let meshes: Vec<_> = scene.meshes.iter().map(|m| (m.quantized().expect("the file's vectors are finite"), m.model)).collect();
+            let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
+            for (m, model) in &meshes {
+                frame.draw(&m.mesh(), model, &WHITE).expect("the scene fits its buffers");
+            }
+            print_frame(name, mode, frame);
+        }
     }
     // The monkey with its texture, as the firmware bakes it.
     if let Some((_, monkey)) = files.iter().find(|(name, _)| *name == "monkey") {

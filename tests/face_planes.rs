@@ -116,6 +116,15 @@ fn face_planes_leave_the_blender_exports_unchanged() {
             let planes = planes_of(&mesh);
             same_frames::<FloatingPoint>(&mesh, &planes, file);
             same_frames::<FixedPoint>(&mesh, &planes, file);
+            // Quantized to i16 as `soft3d-bake --quantize i16` does (the
+            // benchmark's `torus.babylon-i16`): its planes are those of the
+            // positions it reads (accepted, not dropped), and leave its
+            // frames unchanged too.
+            let quantized = owned.quantized().unwrap();
+            assert_eq!(quantized.mesh().face_planes(), Some(&quantized.planes[..]));
+            let steps = quantized.steps.mesh(&owned.indices).unwrap();
+            assert_eq!(steps.vertex_count(), mesh.vertex_count());
+            same_frames::<FixedPoint>(&steps, &quantized.planes, file);
             // Coarse snapping can turn a back face front-facing: the
             // screen-space test alone then queues it, and it may cover a
             // pixel or two. Culled in model space, it is not drawn.

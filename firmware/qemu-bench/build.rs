@@ -20,11 +20,14 @@ fn main() {
         println!("cargo:warning=../shared/assets is absent: the Babylon benchmark scenes are skipped");
         return;
     }
-    // The torus as geometry only; the monkey with its texture (RGB565,
-    // full size), which the accuracy study draws.
-    for (file, rust) in scenes {
+    // The torus as geometry only, in `f32` and `i16`
+    // (`soft3d::scenes::QUANTIZED_SCENES`); the monkey with its texture
+    // (RGB565, full size), which the accuracy study draws.
+    let quantized = ("torus.babylon", "torus_i16_file.rs");
+    for (file, rust) in scenes.into_iter().chain([quantized]) {
         let texture_format = if file == "monkey.babylon" { soft3d_bake::TextureFormat::Rgb565 } else { soft3d_bake::TextureFormat::None };
-        let options = soft3d_bake::Options { texture_format, face_planes: true, ..Default::default() };
+        let quantize = if (file, rust) == quantized { soft3d_bake::Quantize::I16 } else { soft3d_bake::Quantize::F32 };
+        let options = soft3d_bake::Options { texture_format, quantize, face_planes: true, ..Default::default() };
         match soft3d_bake::bake_file(&assets.join(file), &out.join(rust), &options) {
             Ok(report) => {
                 for input in report.inputs {

@@ -9,7 +9,7 @@ use crate::blend::{AlphaBlend, Opaque};
 use crate::effect::{BlinnPhong, Color, Gouraud, Textured};
 use crate::material::{Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
-use crate::mesh::{bounding_sphere, face_plane, FacePlane, Mesh, Sphere, Vectors};
+use crate::mesh::{bounding_sphere, face_plane, FacePlane, Mesh, QuantizeError, QuantizedMesh, Sphere, Vectors};
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, Lights};
 use crate::settings::Settings;
@@ -88,6 +88,39 @@ impl OwnedMesh {
         let bounds = bounding_sphere(&Vectors::F32(positions));
         let p = |i: u16| positions.get(i as usize).copied().unwrap_or(Vec3::ZERO);
         indices.chunks_exact(3).map(|t| face_plane(p(t[0]), p(t[1]), p(t[2]), bounds)).collect()
+    }
+
+    /// The mesh quantized as `soft3d-bake --quantize i16 --face-planes`
+    /// bakes it: positions and normals in `i16` steps, and the planes of
+    /// the positions the renderer reads from them.
+    pub fn quantized(&self) -> Result<QuantizedOwnedMesh<'_>, QuantizeError> {
+        let steps = QuantizedMesh::new(&self.positions, &self.normals)?;
+        let planes = Self::face_planes(&steps.dequantized_positions(), &self.indices);
+        Ok(QuantizedOwnedMesh { source: self, steps, planes })
+    }
+}
+
+/// An [`OwnedMesh`] with `i16` positions and normals ([`OwnedMesh::quantized`]).
+#[derive(Clone, Debug)]
+pub struct QuantizedOwnedMesh<'a> {
+    /// The mesh quantized (its indices, texture coordinates and model matrix).
+    pub source: &'a OwnedMesh,
+    /// Positions and normals in steps.
+    pub steps: QuantizedMesh,
+    /// Face planes of the dequantized positions.
+    pub planes: Vec<FacePlane>,
+}
+
+impl QuantizedOwnedMesh<'_> {
+    /// The mesh view of the steps, with its face planes.
+    pub fn mesh(&self) -> Mesh<'_> {
+        // As for `OwnedMesh::mesh`: the arrays came from a validated mesh.
+        let m = self.steps.mesh(&self.source.indices).unwrap_or(EMPTY);
+        let m = match &self.source.uvs {
+            Some(uv) => m.with_uvs(uv).unwrap_or(m),
+            None => m,
+        };
+        m.with_face_planes(&self.planes).unwrap_or(m)
     }
 }
 

@@ -106,6 +106,11 @@ pub static WHITE: Material<Gouraud> = Material::new(Gouraud);
 /// available), each with its file's camera, [`headlight`] and [`WHITE`].
 pub const FILE_SCENES: [(&str, &str); 2] = [("torus.babylon", "torus.babylon"), ("monkey", "monkey.babylon")];
 
+/// The torus of [`FILE_SCENES`] (the scene named second) from `i16`
+/// positions and normals, as `soft3d-bake --quantize i16` stores them: what
+/// quantized geometry costs or saves in time, and changes in the frame.
+pub const QUANTIZED_SCENES: [(&str, &str); 1] = [("torus.babylon-i16", "torus.babylon")];
+
 /// The textured benchmark scenes: the monkey of [`FILE_SCENES`] drawn with
 /// its texture by [`textured`], its perspective corrected at every pixel
 /// (`monkey-tex`) or every 32 pixels (`monkey-tex32`, the setting

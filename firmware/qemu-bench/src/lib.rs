@@ -23,14 +23,22 @@ pub mod monkey_file {
     include!(concat!(env!("OUT_DIR"), "/monkey_file.rs"));
 }
 
-/// The baked scenes, in the order of `FILE_SCENES`: camera and meshes.
+#[cfg(soft3d_assets)]
+#[allow(missing_docs, dead_code)]
+pub mod torus_i16_file {
+    include!(concat!(env!("OUT_DIR"), "/torus_i16_file.rs"));
+}
+
+/// The baked scenes, in the order of `FILE_SCENES` then
+/// `QUANTIZED_SCENES`: camera and meshes.
 #[cfg(soft3d_assets)]
 pub fn file_scene(
     i: usize,
 ) -> (soft3d::Camera, &'static [(&'static soft3d::mesh::Mesh<'static>, soft3d::math::Mat4, Rgb888, soft3d::Cull)]) {
     match i {
         0 => (torus_file::CAMERA, &torus_file::MESHES),
-        _ => (monkey_file::CAMERA, &monkey_file::MESHES),
+        1 => (monkey_file::CAMERA, &monkey_file::MESHES),
+        _ => (torus_i16_file::CAMERA, &torus_i16_file::MESHES),
     }
 }
 

@@ -60,7 +60,7 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
         }
     }
     #[cfg(soft3d_assets)]
-    for (i, (name, _)) in soft3d::scenes::FILE_SCENES.iter().enumerate() {
+    for (i, (name, _)) in soft3d::scenes::FILE_SCENES.iter().chain(&soft3d::scenes::QUANTIZED_SCENES).enumerate() {
         if selected(name, mode) {
             let (camera, meshes) = file_scene(i);
             measure_with(timer, &mut renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
