@@ -164,6 +164,14 @@ const RSQRT_TABLE: [u32; 96] = {
 #[inline]
 fn truncated_from_bits(v: f32, k: i32) -> i32 {
     let bits = v.to_bits();
+    // First, in one unsigned compare, a positive `v * 2^k` in `[1, 2^24)`
+    // (a color or depth in 16.16): the mantissa shifted right by `right`
+    // in `[0, 24)`. The sign bit takes a negative value's `right` below
+    // zero, out of that range.
+    let right = 150 - k - (bits >> 23) as i32;
+    if (right as u32) < 24 {
+        return (((bits & 0x7F_FFFF) | 0x80_0000) >> right) as i32;
+    }
     // |v * 2^k| = mantissa * 2^shift. Zero and subnormals give a shift
     // far below -24 (they convert to 0), infinity and NaN one above 8.
     let shift = (bits << 1 >> 24) as i32 - 150 + k;
