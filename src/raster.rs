@@ -22,7 +22,7 @@
 
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
-use crate::math::{all_short, all_within, div_floor_small, mul_wide, Interp};
+use crate::math::{all_short, all_within, div_floor_small, greater, less, mul_wide, Interp};
 use crate::settings::DepthFormat;
 
 /// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
@@ -716,9 +716,9 @@ impl<const V: usize> VertexValues<V> {
         // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
         let q = if P::CORRECT {
             // Plain compares: `f32::max` is a library call on the M4F.
-            let qmax = if b.q > a.q { b.q } else { a.q };
-            let qmax = if c.q > qmax { c.q } else { qmax };
-            let k = if qmax > 0.0 { 1.0 / qmax } else { 1.0 };
+            let qmax = if greater(b.q, a.q) { b.q } else { a.q };
+            let qmax = if greater(c.q, qmax) { c.q } else { qmax };
+            let k = if greater(qmax, 0.0) { 1.0 / qmax } else { 1.0 };
             (a.q * k, b.q * k, c.q * k)
         } else {
             (1.0, 1.0, 1.0)
@@ -735,8 +735,8 @@ impl<const V: usize> VertexValues<V> {
             // periods to start near zero, so large coordinates keep their
             // precision.
             if periods[i] > 0.0 {
-                let low = if vb < va { vb } else { va };
-                let low = if vc < low { vc } else { low };
+                let low = if less(vb, va) { vb } else { va };
+                let low = if less(vc, low) { vc } else { low };
                 let shift = floor(low / periods[i]) * periods[i];
                 (va, vb, vc) = (va - shift, vb - shift, vc - shift);
             }
@@ -745,7 +745,7 @@ impl<const V: usize> VertexValues<V> {
                 // Rounding of the two planes must not push a constant
                 // channel off its value. Plain compares: `f32::min` is a
                 // library call without an FPU min instruction (Cortex-M4F).
-                let (min, max) = (|a: f32, b: f32| if b < a { b } else { a }, |a: f32, b: f32| if b > a { b } else { a });
+                let (min, max) = (|a: f32, b: f32| if less(b, a) { b } else { a }, |a: f32, b: f32| if greater(b, a) { b } else { a });
                 let lo = max(min(min(va, vb), vc), ranges[i].0);
                 let hi = max(min(max(max(va, vb), vc), ranges[i].1), lo);
                 bounds[i] = (lo, hi);
