@@ -129,7 +129,7 @@ pub fn snap_f64(v: f64, subpixel_bits: u32) -> Option<i32> {
 fn floor_f32(v: f32) -> f32 {
     // Callers pass |v| < 2^23 + 1, where the i32 round trip is exact.
     let t = v as i32 as f32;
-    if t > v {
+    if greater(t, v) {
         t - 1.0
     } else {
         t
@@ -734,7 +734,7 @@ impl<const V: usize> VertexValues<V> {
             // Periodic values (texture coordinates) are shifted by whole
             // periods to start near zero, so large coordinates keep their
             // precision.
-            if periods[i] > 0.0 {
+            if greater(periods[i], 0.0) {
                 let low = if less(vb, va) { vb } else { va };
                 let low = if less(vc, low) { vc } else { low };
                 let shift = floor(low / periods[i]) * periods[i];
@@ -866,7 +866,7 @@ fn no_unroll() {
 /// `floor` for any finite `f32` (values from 2^23 up are integers).
 #[inline]
 fn floor(v: f32) -> f32 {
-    if v.abs() < 8_388_608.0 {
+    if less(v.abs(), 8_388_608.0) {
         floor_f32(v)
     } else {
         v
