@@ -22,7 +22,7 @@
 
 use crate::effect::{Color, Effect, MAX_VARYINGS};
 use crate::material::{DepthMode, Perspective};
-use crate::math::{all_short, all_within, div_floor_small, greater, less, mul_wide, Interp};
+use crate::math::{all_short, all_within, div_floor_small, greater, less, mul, mul_wide, Interp};
 use crate::settings::DepthFormat;
 
 /// Largest magnitude of a snapped coordinate with `subpixel_bits` bits of
@@ -719,7 +719,7 @@ impl<const V: usize> VertexValues<V> {
             let qmax = if greater(b.q, a.q) { b.q } else { a.q };
             let qmax = if greater(c.q, qmax) { c.q } else { qmax };
             let k = if greater(qmax, 0.0) { 1.0 / qmax } else { 1.0 };
-            (a.q * k, b.q * k, c.q * k)
+            (mul(a.q, k), mul(b.q, k), mul(c.q, k))
         } else {
             (1.0, 1.0, 1.0)
         };
@@ -737,10 +737,16 @@ impl<const V: usize> VertexValues<V> {
             if greater(periods[i], 0.0) {
                 let low = if less(vb, va) { vb } else { va };
                 let low = if less(vc, low) { vc } else { low };
-                let shift = floor(low / periods[i]) * periods[i];
-                (va, vb, vc) = (va - shift, vb - shift, vc - shift);
+                // Most triangles start in the first period: without an FPU
+                // the shift by none (a zero, tested on its bits) is skipped.
+                let whole = floor(low / periods[i]);
+                if crate::math::HARD_FLOAT || whole.to_bits() << 1 != 0 {
+                    let shift = whole * periods[i];
+                    (va, vb, vc) = (va - shift, vb - shift, vc - shift);
+                }
             }
-            vary[i] = (va * q.0, vb * q.1, vc * q.2);
+            // (`q` is 1 without perspective correction.)
+            vary[i] = if P::CORRECT { (mul(va, q.0), mul(vb, q.1), mul(vc, q.2)) } else { (va, vb, vc) };
             if P::CORRECT {
                 // Rounding of the two planes must not push a constant
                 // channel off its value. Plain compares: `f32::min` is a
@@ -753,7 +759,7 @@ impl<const V: usize> VertexValues<V> {
         }
         Self {
             z_range: (1.0 * S::DEPTH_SCALE, (DEPTH_RANGE + 1.999) * S::DEPTH_SCALE),
-            q: (q.0 * scale, q.1 * scale, q.2 * scale),
+            q: if P::CORRECT { (mul(q.0, scale), mul(q.1, scale), mul(q.2, scale)) } else { q },
             // Normalized q is at most 1 at the vertices; the margin above
             // lets its rounded plane overshoot there (it only needs to
             // stay positive).
