@@ -715,7 +715,8 @@ impl<const V: usize> VertexValues<V> {
         // Perspective-correct varyings are interpolated as value * q', with
         // q' = q / max(q) in (0, 1] (normalized so fixed point keeps precision).
         let q = if P::CORRECT {
-            // Plain compares: `f32::max` is a library call on the M4F.
+            // Compares, not `f32::max` (a library call on the M4F); without
+            // an FPU, on the bits (`greater`), and the products too (`mul`).
             let qmax = if greater(b.q, a.q) { b.q } else { a.q };
             let qmax = if greater(c.q, qmax) { c.q } else { qmax };
             let k = if greater(qmax, 0.0) { 1.0 / qmax } else { 1.0 };
@@ -749,7 +750,7 @@ impl<const V: usize> VertexValues<V> {
             vary[i] = if P::CORRECT { (mul(va, q.0), mul(vb, q.1), mul(vc, q.2)) } else { (va, vb, vc) };
             if P::CORRECT {
                 // Rounding of the two planes must not push a constant
-                // channel off its value. Plain compares: `f32::min` is a
+                // channel off its value. Compares, not `f32::min`: a
                 // library call without an FPU min instruction (Cortex-M4F).
                 let (min, max) = (|a: f32, b: f32| if less(b, a) { b } else { a }, |a: f32, b: f32| if greater(b, a) { b } else { a });
                 let lo = max(min(min(va, vb), vc), ranges[i].0);
