@@ -40,9 +40,9 @@ fn ordered_bits(v: f32) -> i32 {
 
 /// `a * b`, rounded to nearest even as IEEE 754 does. Without an FPU, two
 /// normal operands with a normal product take integer arithmetic on their
-/// significands (some 40 instructions on ARMv6-M, against about 130 for
-/// the library's general multiply), as does a zero times a finite value;
-/// any other goes to the library.
+/// significands (the library's general multiply also calls a 64-bit
+/// multiply), as does a zero times a finite value; any other goes to the
+/// library.
 #[inline(always)]
 pub(crate) fn mul(a: f32, b: f32) -> f32 {
     if HARD_FLOAT {
