@@ -30,6 +30,18 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// be checked against their ranges ([`Interp::plane_within`]). `f32`
     /// saturates when converted instead.
     const WRAPS: bool;
+    /// How perspective-correct varyings are divided. `true` (`f32`): each
+    /// is interpolated relative to the triangle's top vertex, as
+    /// `(v - v_top) * q`, and `v_top` is added back after the division.
+    /// A constant varying then stays exact, and rounding moves a value by
+    /// a fraction of its spread across the triangle, not of its size, so
+    /// the span loop divides without clamping; a triangle whose `q` varies
+    /// more than [`MAX_Q_RATIO`](crate::raster::MAX_Q_RATIO) to one, where
+    /// the division amplifies rounding, takes the careful path, which
+    /// clamps. `false` (fixed point, whose rounding is too coarse for
+    /// that): `v * q` is interpolated and every division is clamped to the
+    /// vertex values' range.
+    const RELATIVE_DIVISION: bool;
     /// Whether the vertex stage works in integers
     /// ([`IntegerVertices`](crate::vertex::IntegerVertices)) rather than in
     /// `f32`: where there is no FPU, that is the bulk of a small-triangle
@@ -232,6 +244,7 @@ impl Interp for f32 {
     const DEPTH_SCALE: f32 = 1.0;
     const Q_SCALE: f32 = 1.0;
     const WRAPS: bool = false;
+    const RELATIVE_DIVISION: bool = true;
     const INTEGER_VERTICES: bool = false;
     #[inline]
     fn from_f32(v: f32) -> Self {
@@ -445,6 +458,7 @@ impl Interp for Fixed {
     const DEPTH_SCALE: f32 = 0.5;
     const Q_SCALE: f32 = 8192.0;
     const WRAPS: bool = true;
+    const RELATIVE_DIVISION: bool = false;
     const INTEGER_VERTICES: bool = true;
     #[inline]
     fn from_f32(v: f32) -> Self {
