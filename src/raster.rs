@@ -710,9 +710,6 @@ struct VertexValues<const V: usize> {
     /// clamps, and a relative division adds `lo` back (the only bound set
     /// where it does not clamp).
     bounds: [(f32, f32); V],
-    /// Whether `q` varies over the triangle by more than [`MAX_Q_RATIO`]
-    /// to one (only tested where [`Interp::RELATIVE_DIVISION`] holds).
-    steep_q: bool,
 }
 
 /// Perspective-correct values whose `1 / w` (`q`) varies across a triangle
@@ -748,8 +745,6 @@ impl<const V: usize> VertexValues<V> {
         // The q plane itself is kept times `Q_SCALE` (see there).
         let scale = if P::CORRECT { S::Q_SCALE } else { 1.0 };
         let relative = P::CORRECT && S::RELATIVE_DIVISION;
-        // `q` is normalized to at most 1, so its ratio shows in its least.
-        let steep_q = relative && (less(q.0, 1.0 / MAX_Q_RATIO) || less(q.1, 1.0 / MAX_Q_RATIO) || less(q.2, 1.0 / MAX_Q_RATIO));
         let ranges = E::ranges::<C>();
         let periods = effect.periods();
         let mut vary = [(0.0, 0.0, 0.0); V];
@@ -805,7 +800,6 @@ impl<const V: usize> VertexValues<V> {
             vary,
             ranges,
             bounds,
-            steep_q,
         }
     }
 }
@@ -839,7 +833,8 @@ struct Planes<S, const V: usize> {
     /// Per varying, the bounds of its perspective division (see
     /// [`VertexValues::bounds`]).
     bounds: [(S, S); MAX_VARYINGS],
-    /// See [`VertexValues::steep_q`].
+    /// Whether `q` varies over the triangle by more than [`MAX_Q_RATIO`]
+    /// to one (only tested where [`Interp::RELATIVE_DIVISION`] holds).
     steep_q: bool,
     /// Whether the vertex values alone show every plane in range (see
     /// [`Interp::clear_of_bounds`]); if not, [`Planes::safe`] decides.
@@ -850,6 +845,11 @@ impl<S: Interp, const V: usize> Planes<S, V> {
     #[inline(always)]
     fn new<C: Color, E: Effect, P: Perspective>(shape: &Shape<S>, t: &Sorted<'_, V>, effect: &E, clamp: bool) -> Self {
         let values = VertexValues::<V>::new::<C, E, P, S>(t, effect, clamp);
+        // `q` is normalized to at most `Q_SCALE`, so its ratio shows in its
+        // least.
+        let least_q = S::Q_SCALE / MAX_Q_RATIO;
+        let (qa, qb, qc) = values.q;
+        let steep_q = P::CORRECT && S::RELATIVE_DIVISION && (less(qa, least_q) || less(qb, least_q) || less(qc, least_q));
         // Depth from window z in the scalar itself (integers only in fixed
         // point), not through f32.
         let (a, b, c) = (S::depth(t.a.z), S::depth(t.b.z), S::depth(t.c.z));
@@ -882,7 +882,7 @@ impl<S: Interp, const V: usize> Planes<S, V> {
                 bounds[i] = (S::from_f32(values.bounds[i].0), hi);
             }
         }
-        Self { z, q, vary, bounds, steep_q: values.steep_q, clear }
+        Self { z, q, vary, bounds, steep_q, clear }
     }
 
     /// Whether every plane the material uses stays within its range at
