@@ -397,27 +397,48 @@ fn shape() -> impl Strategy<Value = [(f64, f64); 3]> {
 
 /// Vertex w: 1/16 to 16, log-uniform.
 fn any_w() -> impl Strategy<Value = f32> {
-    (-4.0f32..4.0).prop_map(|e| e.exp2())
+    w_within(4.0)
+}
+
+/// Vertex w: `2^-e` to `2^e`, log-uniform.
+fn w_within(e: f32) -> impl Strategy<Value = f32> {
+    (-e..e).prop_map(|e| e.exp2())
+}
+
+/// Property 3's input: a triangle (slivers included) with vertex colors
+/// (narrow ranges included) and `w`s, drawn in one mode with one
+/// interpolation into strips of one height.
+#[derive(Clone, Debug)]
+struct ColorCase {
+    mode: (u32, bool),
+    p: [(f64, f64); 3],
+    ch: [[u8; 3]; 3],
+    w: [f32; 3],
+    interp: Interp,
+    strip: usize,
+}
+
+/// Property 3's cases, each vertex's `w` from [`w_within`]`(e)`.
+fn color_cases(e: f32) -> impl Strategy<Value = ColorCase> {
+    let ch = [channel_values(), channel_values(), channel_values()];
+    (any_mode(), shape(), ch, [w_within(e), w_within(e), w_within(e)], any_interp(), 1usize..=H)
+        .prop_map(|(mode, p, ch, w, interp, strip)| ColorCase { mode, p, ch, w, interp, strip })
 }
 
 /// Property 3's check: every pixel the triangle draws has each channel
 /// within [min, max] of the vertices' values, with no slack (README:
 /// "colors and depth never overshoot the vertex values"; src/raster.rs:
 /// planes are checked against their ranges at the vertices, else span ends
-/// are clamped, and perspective-divided values are clamped to the vertex
-/// range); pixels outside the oracle's coverage keep the background.
-fn check_color_bounds(
-    (bits, float): (u32, bool),
-    p: &[(f64, f64); 3],
-    ch: &[[u8; 3]; 3],
-    w: &[f32; 3],
-    interp: Interp,
-    strip: usize,
-) -> Result<(), TestCaseError> {
+/// are clamped; perspective-divided values are clamped to the vertex range
+/// in fixed point, and in `f32` divided relative to their least vertex
+/// value, clamped where `1 / w` varies more than `MAX_Q_RATIO` to one);
+/// pixels outside the oracle's coverage keep the background.
+fn check_color_bounds(c: &ColorCase) -> Result<(), TestCaseError> {
+    let ColorCase { mode: (bits, float), p, ch, w, interp, strip } = *c;
     let t: [TriVertex; 3] =
         [0, 1, 2].map(|i| TriVertex { x: p[i].0, y: p[i].1, z: 0.5, w: w[i], color: Rgb888::new(ch[0][i], ch[1][i], ch[2][i]) });
     let img = with_mode(bits, float, Draw { tris: &[t], strip, interp, cull: Cull::None });
-    let cover = oracle(p, W, H, bits);
+    let cover = oracle(&p, W, H, bits);
     for (i, (&px, &covered)) in img.pixels.iter().zip(&cover).enumerate() {
         let (x, y) = (i % W, i / W);
         if covered == 0 {
@@ -435,21 +456,13 @@ fn check_color_bounds(
 proptest! {
     #![proptest_config(config(18000))]
 
-    /// Property 3: random triangles (slivers included) with random vertex
-    /// colors (narrow ranges included) and w (1/16 to 16), interpolated
-    /// affinely (w unused), perspective-correct per pixel or per span of 8,
-    /// in every mode: no channel leaves the vertices' range (see
-    /// [`check_color_bounds`]).
+    /// Property 3: random triangles with random vertex colors and w (1/16
+    /// to 16), interpolated affinely (w unused), perspective-correct per
+    /// pixel or per span of 8, in every mode: no channel leaves the
+    /// vertices' range (see [`check_color_bounds`]).
     #[test]
-    fn interpolated_colors_stay_within_the_vertex_range(
-        mode in any_mode(),
-        p in shape(),
-        ch in [channel_values(), channel_values(), channel_values()],
-        w in [any_w(), any_w(), any_w()],
-        interp in any_interp(),
-        strip in 1usize..=H,
-    ) {
-        check_color_bounds(mode, &p, &ch, &w, interp, strip)?;
+    fn interpolated_colors_stay_within_the_vertex_range(c in color_cases(4.0)) {
+        check_color_bounds(&c)?;
     }
 }
 
@@ -463,21 +476,9 @@ proptest! {
     /// routing disabled, three runs failed after 71, 7,543 and 10,522
     /// cases.
     #[test]
-    fn interpolated_colors_stay_within_the_vertex_range_whatever_the_w_ratio(
-        mode in any_mode(),
-        p in shape(),
-        ch in [channel_values(), channel_values(), channel_values()],
-        w in [any_wide_w(), any_wide_w(), any_wide_w()],
-        interp in any_interp(),
-        strip in 1usize..=H,
-    ) {
-        check_color_bounds(mode, &p, &ch, &w, interp, strip)?;
+    fn interpolated_colors_stay_within_the_vertex_range_whatever_the_w_ratio(c in color_cases(12.0)) {
+        check_color_bounds(&c)?;
     }
-}
-
-/// Vertex w: 2^-12 to 2^12, log-uniform.
-fn any_wide_w() -> impl Strategy<Value = f32> {
-    (-12.0f32..12.0).prop_map(|e| e.exp2())
 }
 
 // ---------------------------------------------------------------------------
