@@ -724,9 +724,9 @@ struct VertexValues<const V: usize> {
 pub const MAX_Q_RATIO: f32 = 16.0;
 
 impl<const V: usize> VertexValues<V> {
-    #[inline(always)]
     /// With `clamp`, the upper bounds are set up even where the lean path
     /// does not clamp (for the careful path).
+    #[inline(always)]
     fn new<C: Color, E: Effect, P: Perspective, S: Interp>(t: &Sorted<'_, V>, effect: &E, clamp: bool) -> Self {
         let (a, b, c) = (t.a, t.b, t.c);
         // Depth in stored units, times the scalar's depth scale.

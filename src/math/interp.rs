@@ -31,16 +31,16 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// saturates when converted instead.
     const WRAPS: bool;
     /// How perspective-correct varyings are divided. `true` (`f32`): each
-    /// is interpolated relative to the triangle's top vertex, as
-    /// `(v - v_top) * q`, and `v_top` is added back after the division.
-    /// A constant varying then stays exact, and rounding moves a value by
-    /// a fraction of its spread across the triangle, not of its size, so
-    /// the span loop divides without clamping; a triangle whose `q` varies
-    /// more than [`MAX_Q_RATIO`](crate::raster::MAX_Q_RATIO) to one, where
-    /// the division amplifies rounding, takes the careful path, which
-    /// clamps. `false` (fixed point, whose rounding is too coarse for
-    /// that): `v * q` is interpolated and every division is clamped to the
-    /// vertex values' range.
+    /// is interpolated relative to its least value at the triangle's
+    /// vertices, as `(v - lo) * q`, and `lo` is added back after the
+    /// division. A constant varying then stays exact, and rounding moves a
+    /// value by a fraction of its spread across the triangle, not of its
+    /// size, so the span loop divides without clamping; a triangle whose
+    /// `q` varies more than [`MAX_Q_RATIO`](crate::raster::MAX_Q_RATIO) to
+    /// one, where the division amplifies rounding, takes the careful path,
+    /// which clamps. `false` (fixed point, whose rounding is too coarse
+    /// for that): `v * q` is interpolated and every division is clamped to
+    /// the vertex values' range.
     const RELATIVE_DIVISION: bool;
     /// Whether the vertex stage works in integers
     /// ([`IntegerVertices`](crate::vertex::IntegerVertices)) rather than in
