@@ -755,7 +755,9 @@ impl<const V: usize> VertexValues<V> {
         for i in 0..E::VARYINGS.min(V) {
             let (mut va, mut vb, mut vc) = (a.attrs[i], b.attrs[i], c.attrs[i]);
             let periodic = greater(periods[i], 0.0);
-            let mut least = if periodic || relative { min(min(va, vb), vc) } else { 0.0 };
+            // The least vertex value: a periodic value's period, and a
+            // perspective division's lower bound.
+            let mut least = if periodic || P::CORRECT { min(min(va, vb), vc) } else { 0.0 };
             // Periodic values (texture coordinates) are shifted by whole
             // periods to start near zero, so large coordinates keep their
             // precision.
@@ -771,7 +773,6 @@ impl<const V: usize> VertexValues<V> {
             if P::CORRECT && (clamp || !relative) {
                 // Rounding of the two planes must not push a constant
                 // channel off its value.
-                let least = if periodic || relative { least } else { min(min(va, vb), vc) };
                 let lo = max(least, ranges[i].0);
                 let hi = max(min(max(max(va, vb), vc), ranges[i].1), lo);
                 bounds[i] = (lo, hi);

@@ -9,7 +9,7 @@ use crate::blend::{AlphaBlend, Opaque};
 use crate::effect::{BlinnPhong, Color, Gouraud, Textured};
 use crate::material::{Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
-use crate::mesh::{bounding_sphere, face_plane, FacePlane, Mesh, QuantizeError, QuantizedMesh, Sphere, Vectors};
+use crate::mesh::{bounding_sphere, face_plane, FacePlane, Mesh, MeshError, QuantizeError, QuantizedMesh, Sphere, Vectors};
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, Lights};
 use crate::settings::Settings;
@@ -73,14 +73,20 @@ pub struct OwnedMesh {
 impl OwnedMesh {
     /// The mesh view of the arrays, with its face planes.
     pub fn mesh(&self) -> Mesh<'_> {
+        self.complete(Mesh::new(&self.positions, &self.normals, &self.indices), &self.planes)
+    }
+
+    /// `geometry` (built from this mesh's arrays, or from their
+    /// quantized steps) with this mesh's texture coordinates and `planes`.
+    fn complete<'a>(&'a self, geometry: Result<Mesh<'a>, MeshError>, planes: &'a [FacePlane]) -> Mesh<'a> {
         // The arrays came from a validated mesh, so this cannot fail; an
         // empty mesh stands in if it somehow did.
-        let m = Mesh::new(&self.positions, &self.normals, &self.indices).unwrap_or(EMPTY);
+        let m = geometry.unwrap_or(EMPTY);
         let m = match &self.uvs {
             Some(uv) => m.with_uvs(uv).unwrap_or(m),
             None => m,
         };
-        m.with_face_planes(&self.planes).unwrap_or(m)
+        m.with_face_planes(planes).unwrap_or(m)
     }
 
     /// The planes of the mesh's triangles ([`face_plane`]).
@@ -114,13 +120,7 @@ pub struct QuantizedOwnedMesh<'a> {
 impl QuantizedOwnedMesh<'_> {
     /// The mesh view of the steps, with its face planes.
     pub fn mesh(&self) -> Mesh<'_> {
-        // As for `OwnedMesh::mesh`: the arrays came from a validated mesh.
-        let m = self.steps.mesh(&self.source.indices).unwrap_or(EMPTY);
-        let m = match &self.source.uvs {
-            Some(uv) => m.with_uvs(uv).unwrap_or(m),
-            None => m,
-        };
-        m.with_face_planes(&self.planes).unwrap_or(m)
+        self.source.complete(self.steps.mesh(&self.source.indices), &self.planes)
     }
 }
 

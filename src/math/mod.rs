@@ -61,9 +61,17 @@ pub(crate) fn mul_wide_short(a: i32, b: i16) -> i64 {
 
 #[inline(always)]
 fn mul_wide_short_by_halves(a: i32, b: i16) -> i64 {
-    // |a >> 16| <= 2^15 and a & 0xFFFF < 2^16: both products by b fit 32 bits.
-    let b = b as i32;
-    ((((a >> 16) * b) as i64) << 16) + ((a & 0xFFFF) * b) as i64
+    let (high, low) = halves_times_short(a, b as i32);
+    (high << 16) + low
+}
+
+/// `a`'s 16-bit halves times a short `b` (in `[-2^15, 2^15)`): `a b =
+/// high 2^16 + low`. With `a = ah 2^16 + al` (`|ah| <= 2^15`, `al <
+/// 2^16`) each product fits 32 bits: two 16×16-bit products, not the four
+/// of [`mul_wide_by_halves`].
+#[inline(always)]
+fn halves_times_short(a: i32, b: i32) -> (i64, i64) {
+    (((a >> 16) * b) as i64, ((a & 0xFFFF) * b) as i64)
 }
 
 /// `a * b + c * d` exactly. On ARMv6-M one call of two products by halves
@@ -96,11 +104,10 @@ pub(crate) fn all_within<const N: usize>(values: [i32; N], k: u32) -> bool {
 #[inline(never)]
 fn dot_by_halves(a: i32, b: i32, c: i32, d: i32) -> i64 {
     if all_short([b, d]) {
-        // Short second factors (a small triangle's offsets): a = ah 2^16
-        // + al, and each of ah b, al b fits 32 bits (|ah|, |b| <= 2^15,
-        // al < 2^16): two products each, not four.
-        let (ah, al, ch, cl) = (a >> 16, a & 0xFFFF, c >> 16, c & 0xFFFF);
-        return (((ah * b) as i64 + (ch * d) as i64) << 16) + (al * b) as i64 + (cl * d) as i64;
+        // Short second factors (a small triangle's offsets): the high
+        // halves' products summed before their one shift.
+        let ((ab_high, ab_low), (cd_high, cd_low)) = (halves_times_short(a, b), halves_times_short(c, d));
+        return ((ab_high + cd_high) << 16) + ab_low + cd_low;
     }
     mul_wide_by_halves(a, b) + mul_wide_by_halves(c, d)
 }
