@@ -13,7 +13,7 @@ use soft3d::material::{Material, PerPixel, PerSpan, Perspective};
 use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
 use soft3d::scenes::{
     demo_camera, demo_lights, draw_bench, headlight, textured, FrameChecksum, BENCH_SCENES, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES,
-    FILE_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE,
+    FILE_SCENES, MONO_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE, WHITE_MONO,
 };
 use soft3d::{HostRenderer, Settings};
 
@@ -46,6 +46,11 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
                 frame.draw(&m.mesh(), model, &WHITE).expect("the scene fits its buffers");
             }
             print_frame(name, mode, frame);
+        }
+    }
+    for (name, file) in MONO_SCENES {
+        if let Some((_, scene)) = files.iter().find(|(n, _)| *n == file) {
+            file_scene(&mut r, name, mode, scene, &WHITE_MONO);
         }
     }
     // The monkey with its texture, as the firmware bakes it.

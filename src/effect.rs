@@ -101,6 +101,10 @@ pub trait Effect: Copy {
     /// Whether [`Effect::vertex`] reads [`VertexInput::lit`], which the
     /// vertex stage then computes (false: it is left zero).
     const LIT_COLOR: bool = false;
+    /// Whether [`VertexInput::lit`] is white lit (the light alone, in
+    /// levels of 0 to 255) instead of the vertex's color lit, for an
+    /// effect that applies its color per pixel.
+    const LIT_WHITE: bool = false;
     /// Name for reports.
     const NAME: &'static str;
 
@@ -275,6 +279,70 @@ impl Effect for Gouraud {
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         shade_rgb(v)
+    }
+}
+
+/// Gouraud shading under white light: one light level per vertex (the
+/// lights' green channel, which for white or gray lights is each of
+/// them), interpolated, and the material color times it per pixel. A
+/// single-colored mesh lit by white light looks as under [`Gouraud`]
+/// (each channel within one level: the level is rounded to 8 bits first)
+/// for a third of the interpolation: two planes a triangle instead of
+/// four with the depth's. A mesh's vertex colors are not used.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MonoGouraud;
+
+/// [`MonoGouraud`]'s product of a level and a channel of depth `max` is
+/// `(level m + 2^23) >> 24` with `m = channel max MONO_SCALE`: `2^24 /
+/// 255^2` is 258.01, so this is `level channel max / 255^2` rounded (the
+/// product within 0.01% before rounding), at most `max`, and below 2^32
+/// for every depth up to 255.
+const MONO_SCALE: u32 = 258;
+
+/// [`MonoGouraud`]'s channel of depth `max` for a material channel and a
+/// light level (both 0 to 255).
+#[inline(always)]
+fn mono_channel(level: u32, channel: u8, max: u8) -> u8 {
+    ((level * (channel as u32 * max as u32 * MONO_SCALE) + (1 << 23)) >> 24) as u8
+}
+
+impl Effect for MonoGouraud {
+    /// The material color (its products are taken out of the span loop).
+    type Uniforms<S: Interp> = Rgb888;
+    #[inline(always)]
+    fn uniforms<S: Interp>(&self, _: &Lighting, color: Rgb888) -> Rgb888 {
+        color
+    }
+    const VARYINGS: usize = 1;
+    const LIT_VERTICES: bool = true;
+    const USES_FACE: bool = false;
+    const LIT_COLOR: bool = true;
+    const LIT_WHITE: bool = true;
+    const NAME: &'static str = "gouraud-mono";
+    fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
+        let mut r = [(0.0, 0.0); MAX_VARYINGS];
+        r[0] = channel_range(255);
+        r
+    }
+    #[inline(always)]
+    fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
+        let mut out = [0.0; MAX_VARYINGS];
+        out[0] = v.lit[1];
+        out
+    }
+    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
+        Rgb888::BLACK
+    }
+    #[inline(always)]
+    fn shade<C: Color, S: Interp>(&self, color: &Rgb888, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
+        // (Each channel's factor is the same for every pixel: the compiler
+        // takes it out of the span loop.)
+        let level = v[0].channel() as u32;
+        C::from_channels(
+            mono_channel(level, color.r(), C::MAX_R),
+            mono_channel(level, color.g(), C::MAX_G),
+            mono_channel(level, color.b(), C::MAX_B),
+        )
     }
 }
 
@@ -610,5 +678,25 @@ impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
             lit.clamp_between(zero, one).mul(S::from_f32(max as f32)).add(S::from_f32(0.5)).channel()
         };
         C::from_channels(channel(0, C::MAX_R), channel(1, C::MAX_G), channel(2, C::MAX_B))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mono_channels_are_the_rounded_product_within_the_depth() {
+        for max in [31u8, 63, 255] {
+            for level in 0..=255u32 {
+                for c in 0..=255u8 {
+                    let got = mono_channel(level, c, max);
+                    let exact = level as f64 * c as f64 * max as f64 / (255.0 * 255.0);
+                    assert!(got <= max, "level {level}, channel {c}, depth {max}: {got}");
+                    // Rounded, but for the product's 0.005% (at most 0.013 of a level).
+                    assert!((got as f64 - exact).abs() <= 0.513, "level {level}, channel {c}, depth {max}: {got} for {exact}");
+                }
+            }
+        }
     }
 }

@@ -2,8 +2,8 @@
 //! exactly, compared with the Gouraud and Phong renderings of the built-in
 //! sphere mesh; Blinn-Phong highlights where the half vector says.
 
-use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-use soft3d::effect::{BlinnPhong, Effect, Gouraud, Phong};
+use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
+use soft3d::effect::{BlinnPhong, Effect, Gouraud, MonoGouraud, Phong};
 use soft3d::host::Image;
 use soft3d::math::{Mat4, Vec3};
 use soft3d::scenes::SPHERE;
@@ -26,11 +26,16 @@ fn camera() -> Camera {
 }
 
 fn render<S: Settings, E: Effect>(effect: E) -> Image<Rgb888> {
-    let material = Material::new(effect).with_color(Rgb888::new(255, 255, 255));
-    let mut r: HostRenderer<Rgb888, 6, S> = HostRenderer::new(W, H, 16, 1024, 1024, Rgb888::BLACK).unwrap();
-    let mut frame = r.begin_frame(&camera(), &lights(), Rgb888::BLACK);
+    render_in::<Rgb888, S, E>(effect, Rgb888::WHITE)
+}
+
+/// The sphere in display color `C` with `effect` and material `color`.
+fn render_in<C: soft3d::effect::Color, S: Settings, E: Effect>(effect: E, color: Rgb888) -> Image<C> {
+    let material = Material::new(effect).with_color(color);
+    let mut r: HostRenderer<C, 6, S> = HostRenderer::new(W, H, 16, 1024, 1024, C::BLACK).unwrap();
+    let mut frame = r.begin_frame(&camera(), &lights(), C::BLACK);
     frame.draw(&SPHERE, &Mat4::IDENTITY, &material).unwrap();
-    let mut img = Image::new(W as u32, H as u32, Rgb888::BLACK);
+    let mut img = Image::new(W as u32, H as u32, C::BLACK);
     let Ok(_) = frame.finish(&mut img);
     img
 }
@@ -132,4 +137,37 @@ fn blinn_phong_highlight_sits_at_the_half_vector() {
     let sy = (1.0 - (p.y / (3.0 + p.z)) / t) * 0.5 * H as f32;
     let (dx, dy) = (at.0 - sx, at.1 - sy);
     assert!(dx * dx + dy * dy < 16.0, "highlight centered at {at:?}, expected near ({sx:.1}, {sy:.1})");
+}
+
+/// Under white light, one interpolated level times the material color
+/// gives what Gouraud's three channels give: the same pixels covered, each
+/// channel within one level, and most pixels exactly equal.
+#[test]
+fn mono_gouraud_matches_gouraud_under_white_light_within_a_level() {
+    fn compare<S: Settings>(color: Rgb888) {
+        let (rgb, mono) = (render_in::<Rgb565, S, _>(Gouraud, color), render_in::<Rgb565, S, _>(MonoGouraud, color));
+        let (mut covered, mut equal) = (0, 0);
+        for y in 0..H as u32 {
+            for x in 0..W as u32 {
+                let (a, b) = (rgb.get(x, y), mono.get(x, y));
+                assert_eq!(
+                    a == Rgb565::BLACK,
+                    b == Rgb565::BLACK,
+                    "coverage differs at ({x}, {y}), {color:?}, {}",
+                    std::any::type_name::<S>()
+                );
+                let off = |p: u8, q: u8| p.abs_diff(q);
+                let worst = off(a.r(), b.r()).max(off(a.g(), b.g())).max(off(a.b(), b.b()));
+                assert!(worst <= 1, "({x}, {y}): {a:?} against {b:?}, {color:?}, {}", std::any::type_name::<S>());
+                covered += (a != Rgb565::BLACK) as u32;
+                equal += (a != Rgb565::BLACK && a == b) as u32;
+            }
+        }
+        assert!(covered > 2500, "the sphere covers {covered} pixels");
+        assert!(equal * 100 >= covered * 85, "{equal} of {covered} pixels equal, {color:?}, {}", std::any::type_name::<S>());
+    }
+    for color in [Rgb888::WHITE, Rgb888::new(255, 140, 40), Rgb888::new(90, 220, 110), Rgb888::new(7, 0, 129)] {
+        compare::<FixedPoint>(color);
+        compare::<FloatingPoint>(color);
+    }
 }

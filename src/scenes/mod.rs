@@ -2,7 +2,7 @@
 //! the benchmarks, so that none of them needs a file: meshes generated at
 //! compile time, and a crate baked by the bake tool ([`crate_scene`]).
 
-use crate::effect::{Color, Gouraud, Textured};
+use crate::effect::{Color, Gouraud, MonoGouraud, Textured};
 use crate::material::{Material, PerSpan};
 use crate::math::{Mat4, Vec3};
 use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, Mesh, MeshData};
@@ -105,6 +105,14 @@ pub static WHITE: Material<Gouraud> = Material::new(Gouraud);
 /// The benchmark scenes drawn from the shared Blender exports (when
 /// available), each with its file's camera, [`headlight`] and [`WHITE`].
 pub const FILE_SCENES: [(&str, &str); 2] = [("torus.babylon", "torus.babylon"), ("monkey", "monkey.babylon")];
+
+/// [`WHITE`] as one interpolated light level ([`MonoGouraud`]): the same
+/// lighting for a third of the interpolation.
+pub static WHITE_MONO: Material<MonoGouraud> = Material::new(MonoGouraud);
+
+/// The scenes of [`FILE_SCENES`] (named second, in the same order) drawn
+/// with [`WHITE_MONO`].
+pub const MONO_SCENES: [(&str, &str); 2] = [("torus.babylon-mono", "torus.babylon"), ("monkey-mono", "monkey")];
 
 /// The torus of [`FILE_SCENES`] (the scene named second) from `i16`
 /// positions and normals, as `soft3d-bake --quantize i16` stores them: what

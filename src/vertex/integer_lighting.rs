@@ -74,7 +74,12 @@ impl<'a> IntegerLighting<'a> {
             }
             // Unit normals (checked when the mesh was built): finite, and
             // each component within [-1, 1] but for rounding.
-            Vectors::F32(n) => n.get(i).map_or([0; 3], |n| [n.x, n.y, n.z].map(|v| scaled_rounded(v, 30, ONE).unwrap_or(0))),
+            // (Not by `array::map`: a firmware with two lit effects called
+            // its closure out of line, per vertex.)
+            Vectors::F32(n) => n.get(i).map_or([0; 3], |n| {
+                let fraction = |v: f32| scaled_rounded(v, 30, ONE).unwrap_or(0);
+                [fraction(n.x), fraction(n.y), fraction(n.z)]
+            }),
         };
         mul_wide(n[0], d[0]) + mul_wide(n[1], d[1]) + mul_wide(n[2], d[2])
     }

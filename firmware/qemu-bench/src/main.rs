@@ -70,6 +70,18 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
             });
         }
     }
+    // The same files with one interpolated light level.
+    #[cfg(soft3d_assets)]
+    for (i, (name, _)) in soft3d::scenes::MONO_SCENES.iter().enumerate() {
+        if selected(name, mode) {
+            let (camera, meshes) = file_scene(i);
+            measure_with(timer, &mut renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
+                for (mesh, model, _, _) in meshes {
+                    let _ = frame.draw(mesh, model, &soft3d::scenes::WHITE_MONO);
+                }
+            });
+        }
+    }
     #[cfg(soft3d_assets)]
     {
         use soft3d::material::{PerPixel, PerSpan};

@@ -9,7 +9,7 @@
 
 use cortex_m_rt::entry;
 use soft3d::blend::AlphaBlend;
-use soft3d::effect::{BlinnPhong, Flat, FragmentCount, Gouraud, Phong, Textured, VertexColor};
+use soft3d::effect::{BlinnPhong, Flat, FragmentCount, Gouraud, MonoGouraud, Phong, Textured, VertexColor};
 use soft3d::material::{Affine, DepthLess, DepthOff, PerPixel, PerSpan};
 use soft3d::scenes::study::CHECKER;
 use soft3d::texture::{Bilinear, Clamp, Nearest, Repeat};
@@ -35,6 +35,8 @@ fn main() -> ! {
     // The other effects: their code must be present, their cost is shown.
     let gouraud = common::materials::<Gouraud, Affine, DepthLess>(Gouraud);
     common::measure(t, renderer, "all", "gouraud", |frame| common::draw_scene(frame, &gouraud));
+    let mono = common::materials::<MonoGouraud, Affine, DepthLess>(MonoGouraud);
+    common::measure(t, renderer, "all", "gouraud-mono", |frame| common::draw_scene(frame, &mono));
     let unlit = common::materials::<VertexColor, Affine, DepthLess>(VertexColor);
     common::measure(t, renderer, "all", "vertex-color", |frame| common::draw_scene(frame, &unlit));
     let phong = common::materials::<Phong, Affine, DepthLess>(Phong::new());
