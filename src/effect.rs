@@ -287,8 +287,8 @@ impl Effect for Gouraud {
 /// them), interpolated, and the material color times it per pixel. A
 /// single-colored mesh lit by white light looks as under [`Gouraud`]
 /// (each channel within one level: the level is rounded to 8 bits first)
-/// for a third of the interpolation: two planes a triangle instead of
-/// four with the depth's. A mesh's vertex colors are not used.
+/// with one interpolated value instead of three: two planes a triangle
+/// instead of four with the depth's. A mesh's vertex colors are not used.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MonoGouraud;
 

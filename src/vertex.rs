@@ -138,7 +138,7 @@ impl<E: Effect> VertexStage<'_, E> {
 
 /// Where the vertex stage's lit colors ([`VertexInput::lit`]) come from:
 /// the lights in `f32` or in integers ([`IntegerLighting`]). A trait, not
-/// a closure, so that its one method is always inlined: as a closure, a
+/// a closure, so that its inlining is decided here: as a closure, a
 /// firmware with two lit effects (`Gouraud`, `MonoGouraud`) called the
 /// integer lighting out of line (+0.5% of `torus.babylon` in fixed point
 /// on the M4F).

@@ -106,8 +106,8 @@ pub static WHITE: Material<Gouraud> = Material::new(Gouraud);
 /// available), each with its file's camera, [`headlight`] and [`WHITE`].
 pub const FILE_SCENES: [(&str, &str); 2] = [("torus.babylon", "torus.babylon"), ("monkey", "monkey.babylon")];
 
-/// [`WHITE`] as one interpolated light level ([`MonoGouraud`]): the same
-/// lighting for a third of the interpolation.
+/// [`WHITE`] as one interpolated light level ([`MonoGouraud`]) instead of
+/// three channels: the same lighting, each channel within one level.
 pub static WHITE_MONO: Material<MonoGouraud> = Material::new(MonoGouraud);
 
 /// The scenes of [`FILE_SCENES`] (named second, in the same order) drawn

@@ -60,52 +60,39 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
         }
     }
     #[cfg(soft3d_assets)]
-    for (i, (name, _)) in soft3d::scenes::FILE_SCENES.iter().chain(&soft3d::scenes::QUANTIZED_SCENES).enumerate() {
-        if selected(name, mode) {
-            let (camera, meshes) = file_scene(i);
-            measure_with(timer, &mut renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
-                for (mesh, model, _, _) in meshes {
-                    let _ = frame.draw(mesh, model, &soft3d::scenes::WHITE);
-                }
-            });
-        }
-    }
-    // The same files with one interpolated light level.
-    #[cfg(soft3d_assets)]
-    for (i, (name, _)) in soft3d::scenes::MONO_SCENES.iter().enumerate() {
-        if selected(name, mode) {
-            let (camera, meshes) = file_scene(i);
-            measure_with(timer, &mut renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
-                for (mesh, model, _, _) in meshes {
-                    let _ = frame.draw(mesh, model, &soft3d::scenes::WHITE_MONO);
-                }
-            });
-        }
-    }
-    #[cfg(soft3d_assets)]
     {
         use soft3d::material::{PerPixel, PerSpan};
-        use soft3d::scenes::{textured, TEXTURED_SCENES};
+        use soft3d::scenes::{textured, FILE_SCENES, MONO_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE, WHITE_MONO};
+        for (i, (name, _)) in FILE_SCENES.iter().chain(&QUANTIZED_SCENES).enumerate() {
+            baked_scene(timer, &mut renderer, name, mode, ram, i, &WHITE);
+        }
+        // The same files with one interpolated light level.
+        for (i, (name, _)) in MONO_SCENES.iter().enumerate() {
+            baked_scene(timer, &mut renderer, name, mode, ram, i, &WHITE_MONO);
+        }
+        // The monkey (the second file) with its texture.
         let texture = monkey_file::SUZANNE_TEXTURE;
-        textured_monkey(timer, &mut renderer, TEXTURED_SCENES[0], mode, ram, &textured::<PerPixel>(texture));
-        textured_monkey(timer, &mut renderer, TEXTURED_SCENES[1], mode, ram, &textured::<PerSpan<32>>(texture));
+        baked_scene(timer, &mut renderer, TEXTURED_SCENES[0], mode, ram, 1, &textured::<PerPixel>(texture));
+        baked_scene(timer, &mut renderer, TEXTURED_SCENES[1], mode, ram, 1, &textured::<PerSpan<32>>(texture));
     }
 }
 
-/// The monkey drawn with `material` (one of the textured scenes).
+/// Baked scene `scene` (see [`file_scene`]) drawn with `material`, from
+/// its camera with the headlight, measured as scene `name`.
 #[cfg(soft3d_assets)]
-fn textured_monkey<S: Settings, E: soft3d::effect::Effect, P: soft3d::material::Perspective>(
+fn baked_scene<S: Settings, E: soft3d::effect::Effect, P: soft3d::material::Perspective, D: soft3d::material::DepthMode>(
     timer: &mut Timer,
     renderer: &mut BenchRenderer<S>,
     name: &str,
     mode: &str,
     ram: usize,
-    material: &soft3d::Material<E, P>,
+    scene: usize,
+    material: &soft3d::Material<E, P, D>,
 ) {
     if selected(name, mode) {
-        let camera = monkey_file::CAMERA;
+        let (camera, meshes) = file_scene(scene);
         measure_with(timer, renderer, &camera, &soft3d::scenes::headlight(&camera), name, mode, ram, |frame| {
-            for (mesh, model, _, _) in &monkey_file::MESHES {
+            for (mesh, model, _, _) in meshes {
                 let _ = frame.draw(mesh, model, material);
             }
         });
