@@ -7,7 +7,7 @@
 
 use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::RgbColor;
-use soft3d::effect::Effect;
+use soft3d::effect::{ColorLight, Effect, GrayLight};
 use soft3d::host::scene::HostScene;
 use soft3d::material::{Material, PerPixel, PerSpan, Perspective};
 use soft3d::scenes::wall::{draw_wall, WALL_CAMERA, WALL_LIGHTS, WALL_SCENES, WALL_VARYINGS};
@@ -56,8 +56,10 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
     // The monkey with its texture, as the firmware bakes it.
     if let Some((_, monkey)) = files.iter().find(|(name, _)| *name == "monkey") {
         let texture = monkey.textures.first().expect("monkey.babylon names Suzanne.jpg").texture();
-        file_scene(&mut r, TEXTURED_SCENES[0], mode, monkey, &textured::<PerPixel>(texture));
-        file_scene(&mut r, TEXTURED_SCENES[1], mode, monkey, &textured::<PerSpan<32>>(texture));
+        file_scene(&mut r, TEXTURED_SCENES[0], mode, monkey, &textured::<PerPixel, ColorLight>(texture));
+        file_scene(&mut r, TEXTURED_SCENES[1], mode, monkey, &textured::<PerSpan<32>, ColorLight>(texture));
+        file_scene(&mut r, TEXTURED_SCENES[2], mode, monkey, &textured::<PerPixel, GrayLight>(texture));
+        file_scene(&mut r, TEXTURED_SCENES[3], mode, monkey, &textured::<PerSpan<32>, GrayLight>(texture));
     }
 }
 

@@ -417,7 +417,11 @@ fn rescale(v: u32, from_max: u32, to_max: u8) -> u8 {
 /// wraps, written over the strip by `B` ([`Opaque`] by default; with
 /// [`AlphaBlend`](crate::blend::AlphaBlend) the texel's alpha times the
 /// material's opacity, untouched by the lighting, mixes it with what is
-/// there). Texture coordinates are interpolated in texel units. Use it with
+/// there). `L` says how much of the lighting is interpolated: the lit
+/// color's three channels ([`ColorLight`], the default) or one level for
+/// all three ([`GrayLight`]: the same image under gray light, for two
+/// interpolated values fewer). Texture coordinates are interpolated in
+/// texel units. Use it with
 /// [`PerSpan<32>`](crate::material::PerSpan) (or
 /// [`PerPixel`](crate::material::PerPixel)) so the texture does not swim:
 /// the accuracy study (`docs/accuracy.md`) measured correction every 32
@@ -425,30 +429,61 @@ fn rescale(v: u32, from_max: u32, to_max: u8) -> u8 {
 /// instructions.
 ///
 /// Varyings: `u · width`, `v · height`, then the lit color's red, green
-/// and blue in `[0, 256)` (5 in all, so the renderer needs `V >= 5`).
-pub struct Textured<'a, F = Nearest, W = Repeat, B = Opaque> {
+/// and blue in `[0, 256)` (5 in all, so the renderer needs `V >= 5`), or
+/// with [`GrayLight`] its green alone (3 in all).
+pub struct Textured<'a, F = Nearest, W = Repeat, B = Opaque, L = ColorLight> {
     /// The texture.
     pub texture: Texture<'a>,
     /// Opacity of the material, 0 to 255, multiplying the texels' alpha
     /// (only read when `B` blends).
     pub opacity: u8,
-    _modes: core::marker::PhantomData<(F, W, B)>,
+    _modes: core::marker::PhantomData<(F, W, B, L)>,
+}
+
+/// How many lit channels [`Textured`] interpolates (see [`ColorLight`] and
+/// [`GrayLight`]).
+pub trait LightModel {
+    /// The channels of [`VertexInput::lit`] interpolated (0 red, 1 green,
+    /// 2 blue); with one, it lights all three.
+    const CHANNELS: &'static [usize];
+}
+
+/// [`Textured`] interpolates the lit color's red, green and blue: colored
+/// lights and materials are lit exactly.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ColorLight;
+
+impl LightModel for ColorLight {
+    const CHANNELS: &'static [usize] = &[0, 1, 2];
+}
+
+/// [`Textured`] interpolates one light level, the lit color's green
+/// channel, and scales all three texel channels by it: under gray (white
+/// included) lights on a gray (or white) material, where the three lit
+/// channels are equal, exactly the image of [`ColorLight`], for two planes
+/// a triangle and two interpolated values a pixel fewer. Colored lights or
+/// materials give their green channel's brightness in gray.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct GrayLight;
+
+impl LightModel for GrayLight {
+    const CHANNELS: &'static [usize] = &[1];
 }
 
 // Not derived: the marker types need not be `Copy` themselves.
-impl<F, W, B> Clone for Textured<'_, F, W, B> {
+impl<F, W, B, L> Clone for Textured<'_, F, W, B, L> {
     fn clone(&self) -> Self {
         *self
     }
 }
-impl<F, W, B> Copy for Textured<'_, F, W, B> {}
-impl<F, W, B> core::fmt::Debug for Textured<'_, F, W, B> {
+impl<F, W, B, L> Copy for Textured<'_, F, W, B, L> {}
+impl<F, W, B, L> core::fmt::Debug for Textured<'_, F, W, B, L> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("Textured").field("texture", &self.texture).field("opacity", &self.opacity).finish()
     }
 }
 
-impl<'a, F: Filter, W: Wrap, B: Blend> Textured<'a, F, W, B> {
+impl<'a, F: Filter, W: Wrap, B: Blend, L: LightModel> Textured<'a, F, W, B, L> {
     /// The effect for `texture`, fully opaque material.
     pub const fn new(texture: Texture<'a>) -> Self {
         Self { texture, opacity: 255, _modes: core::marker::PhantomData }
@@ -467,18 +502,19 @@ const TEXEL_RANGE: (f32, f32) = (-30_000.0, 30_000.0);
 /// Range of a light channel: its integer part scales a texel by `(l + 1) / 256`.
 const LIGHT_RANGE: (f32, f32) = (0.0, 255.996);
 
-impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
+impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, B, L> {
     type Uniforms<S: Interp> = ();
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
-    const VARYINGS: usize = 5;
+    const VARYINGS: usize = 2 + L::CHANNELS.len();
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
-    const NAME: &'static str = "textured";
+    const NAME: &'static str = if L::CHANNELS.len() == 1 { "textured-gray" } else { "textured" };
 
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
         let mut r = [(0.0, 0.0); MAX_VARYINGS];
-        r[..5].copy_from_slice(&[TEXEL_RANGE, TEXEL_RANGE, LIGHT_RANGE, LIGHT_RANGE, LIGHT_RANGE]);
+        r[..2].copy_from_slice(&[TEXEL_RANGE, TEXEL_RANGE]);
+        r[2..Self::VARYINGS].fill(LIGHT_RANGE);
         r
     }
 
@@ -493,14 +529,17 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
 
     #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
-        let l = v.lit;
         // The light carries half a level, like the color effects'
         // channels: truncation then rounds, and the values keep half a
         // level of margin inside their range (values on its bounds would
         // send every triangle whose rounded planes overshoot them to the
         // careful path).
         let mut out = [0.0; MAX_VARYINGS];
-        out[..5].copy_from_slice(&[v.uv.x * self.texture.width() as f32, v.uv.y * self.texture.height() as f32, l[0], l[1], l[2]]);
+        out[0] = v.uv.x * self.texture.width() as f32;
+        out[1] = v.uv.y * self.texture.height() as f32;
+        for (o, &c) in out[2..].iter_mut().zip(L::CHANNELS) {
+            *o = v.lit[c];
+        }
         out
     }
 
@@ -511,12 +550,14 @@ impl<F: Filter, W: Wrap, B: Blend> Effect for Textured<'_, F, W, B> {
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], dst: C) -> C {
         let t = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16(), B::ALPHA);
-        let light = |t: u32, l: S| (t * (l.channel() as u32 + 1)) >> 8;
+        // Channel `c`'s light: its own varying, or the one level.
+        let level = |c: usize| v[2 + if L::CHANNELS.len() == 1 { 0 } else { c }].channel() as u32 + 1;
+        let light = |t: u32, c: usize| (t * level(c)) >> 8;
         let alpha = if B::ALPHA { scale_alpha(t.a, self.opacity) } else { 255 };
         B::blend(
-            rescale(light(t.r, v[2]), 31, C::MAX_R),
-            rescale(light(t.g, v[3]), 63, C::MAX_G),
-            rescale(light(t.b, v[4]), 31, C::MAX_B),
+            rescale(light(t.r, 0), 31, C::MAX_R),
+            rescale(light(t.g, 1), 63, C::MAX_G),
+            rescale(light(t.b, 2), 31, C::MAX_B),
             alpha,
             dst,
         )

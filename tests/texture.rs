@@ -6,13 +6,15 @@
 //! are hard cases: tests/hard_cases/texture.rs.
 
 use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
-use soft3d::effect::Textured;
+use embedded_graphics::pixelcolor::Rgb888;
+use soft3d::blend::Opaque;
+use soft3d::effect::{ColorLight, GrayLight, LightModel, Textured};
 use soft3d::host::Image;
 use soft3d::material::{Affine, PerPixel, PerSpan, Perspective};
 use soft3d::math::{Mat4, Vec2, Vec3};
 use soft3d::mesh::Mesh;
 use soft3d::texture::{Nearest, Repeat, Texture};
-use soft3d::{Camera, Cull, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, Settings};
+use soft3d::{Camera, Cull, DirectionalLight, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, PointLight, Settings};
 
 mod common;
 
@@ -132,4 +134,58 @@ fn perspective_correct_mapping_matches_the_ray_cast_and_affine_does_not() {
     let share = differ as f64 / covered as f64;
     eprintln!("fixed affine: {differ} of {covered} pixels differ ({:.2}%)", share * 100.0);
     assert!(share > 0.2, "affine mapping should visibly swim at this angle, {differ} of {covered} differ");
+}
+
+/// The baked crate, turned to show three lit faces, drawn with its texture
+/// lit as `L` says by `lights` on a material of `color`.
+fn lit_crate<S: Settings, L: LightModel>(lights: &Lights, color: Rgb888) -> Image<Rgb565> {
+    use soft3d::scenes::crate_scene::{CRATE, CRATE_TEXTURE};
+    let material = Material::new(Textured::<Nearest, Repeat, Opaque, L>::new(CRATE_TEXTURE)).with_color(color).with_perspective::<PerSpan<32>>();
+    let camera = Camera::looking_at(Vec3::new(0.0, 1.5, -3.5), Vec3::new(0.0, 0.0, 0.0));
+    let model = Mat4::rotation_y(0.7) * Mat4::rotation_x(0.3);
+    let mut r: HostRenderer<Rgb565, 5, S> = HostRenderer::new(160, 120, 16, 64, 64, Rgb565::BLACK).unwrap();
+    let mut frame = r.begin_frame(&camera, lights, Rgb565::BLACK);
+    frame.draw(&CRATE, &model, &material).unwrap();
+    let mut img = Image::new(160, 120, Rgb565::BLACK);
+    let Ok(_) = frame.finish(&mut img);
+    img
+}
+
+/// `lights` with each color replaced by its green channel in all three.
+fn grayed(lights: &Lights) -> Lights {
+    let gray = |c: Vec3| Vec3::new(c.y, c.y, c.y);
+    let mut g = *lights;
+    g.ambient = gray(g.ambient);
+    if let Some(p) = g.point.as_mut() {
+        p.color = gray(p.color);
+    }
+    if let Some(d) = g.directional.as_mut() {
+        d.color = gray(d.color);
+    }
+    g
+}
+
+#[test]
+fn gray_light_draws_the_color_light_image_of_the_green_channel() {
+    // Colored lights: each channel differs, so the two models differ
+    // unless the gray one is compared with the lights' green channel.
+    let lights = Lights {
+        ambient: Vec3::new(0.1, 0.15, 0.2),
+        point: Some(PointLight { position: Vec3::new(3.0, 2.0, -3.0), color: Vec3::new(0.7, 0.4, 0.2) }),
+        directional: Some(DirectionalLight { direction: Vec3::new(0.5, -0.8, 0.6), color: Vec3::new(0.3, 0.5, 0.6) }),
+    };
+    fn check<S: Settings>(lights: &Lights) {
+        for color in [Rgb888::WHITE, Rgb888::new(150, 150, 150)] {
+            let gray = lit_crate::<S, GrayLight>(lights, color);
+            let same = lit_crate::<S, ColorLight>(&grayed(lights), color);
+            let colored = lit_crate::<S, ColorLight>(lights, color);
+            let covered = (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| gray.get(x, y) != Rgb565::BLACK).count();
+            assert!(covered > 3000, "{}: the crate covers {covered} pixels", <S::Interp as soft3d::math::Interp>::NAME);
+            assert!(gray == same, "{}, {color:?}: gray light differs from the green channel's color light", <S::Interp as soft3d::math::Interp>::NAME);
+            let differ = (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| gray.get(x, y) != colored.get(x, y)).count();
+            assert!(differ > covered / 2, "{}: colored lights changed only {differ} of {covered} pixels", <S::Interp as soft3d::math::Interp>::NAME);
+        }
+    }
+    check::<FixedPoint>(&lights);
+    check::<FloatingPoint>(&lights);
 }

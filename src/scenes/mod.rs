@@ -2,13 +2,17 @@
 //! the benchmarks, so that none of them needs a file: meshes generated at
 //! compile time, and a crate baked by the bake tool ([`crate_scene`]).
 
-use crate::effect::{Color, Gouraud, MonoGouraud, Textured};
+use crate::blend::Opaque;
+use crate::effect::{Color, Gouraud, LightModel, MonoGouraud, Textured};
+#[cfg(doc)]
+use crate::effect::GrayLight;
 use crate::material::{Material, PerSpan};
 use crate::math::{Mat4, Vec3};
 use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, Mesh, MeshData};
 use crate::renderer::{DrawError, Frame};
 use crate::scene::{Camera, DirectionalLight, Lights, PointLight};
 use crate::settings::Settings;
+use crate::texture::{Nearest, Repeat};
 use crate::tri::TriVertex;
 use embedded_graphics::pixelcolor::{IntoStorage, PixelColor, Rgb888};
 use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Pixel, Size};
@@ -122,12 +126,16 @@ pub const QUANTIZED_SCENES: [(&str, &str); 1] = [("torus.babylon-i16", "torus.ba
 /// The textured benchmark scenes: the monkey of [`FILE_SCENES`] drawn with
 /// its texture by [`textured`], its perspective corrected at every pixel
 /// (`monkey-tex`) or every 32 pixels (`monkey-tex32`, the setting
-/// `docs/accuracy.md` recommends).
-pub const TEXTURED_SCENES: [&str; 2] = ["monkey-tex", "monkey-tex32"];
+/// `docs/accuracy.md` recommends), then the same two lit by one
+/// interpolated level ([`GrayLight`]): the headlight is gray and the
+/// material white, so their frames are those of the first two.
+pub const TEXTURED_SCENES: [&str; 4] = ["monkey-tex", "monkey-tex32", "monkey-tex-gray", "monkey-tex32-gray"];
 
 /// The material of the textured benchmark scenes: `texture` (nearest texel,
-/// repeating) times Gouraud lighting, perspective mode `P`.
-pub const fn textured<P: crate::material::Perspective>(texture: crate::texture::Texture<'_>) -> Material<Textured<'_>, P> {
+/// repeating) times Gouraud lighting interpolated as `L` says, perspective mode `P`.
+pub const fn textured<P: crate::material::Perspective, L: LightModel>(
+    texture: crate::texture::Texture<'_>,
+) -> Material<Textured<'_, Nearest, Repeat, Opaque, L>, P> {
     Material::new(Textured::new(texture)).with_perspective::<P>()
 }
 

@@ -61,6 +61,7 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     }
     #[cfg(soft3d_assets)]
     {
+        use soft3d::effect::{ColorLight, GrayLight};
         use soft3d::material::{PerPixel, PerSpan};
         use soft3d::scenes::{textured, FILE_SCENES, MONO_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE, WHITE_MONO};
         for (i, (name, _)) in FILE_SCENES.iter().chain(&QUANTIZED_SCENES).enumerate() {
@@ -72,8 +73,11 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
         }
         // The monkey (the second file) with its texture.
         let texture = monkey_file::SUZANNE_TEXTURE;
-        baked_scene(timer, &mut renderer, TEXTURED_SCENES[0], mode, ram, 1, &textured::<PerPixel>(texture));
-        baked_scene(timer, &mut renderer, TEXTURED_SCENES[1], mode, ram, 1, &textured::<PerSpan<32>>(texture));
+        baked_scene(timer, &mut renderer, TEXTURED_SCENES[0], mode, ram, 1, &textured::<PerPixel, ColorLight>(texture));
+        baked_scene(timer, &mut renderer, TEXTURED_SCENES[1], mode, ram, 1, &textured::<PerSpan<32>, ColorLight>(texture));
+        // The same with one interpolated light level.
+        baked_scene(timer, &mut renderer, TEXTURED_SCENES[2], mode, ram, 1, &textured::<PerPixel, GrayLight>(texture));
+        baked_scene(timer, &mut renderer, TEXTURED_SCENES[3], mode, ram, 1, &textured::<PerSpan<32>, GrayLight>(texture));
     }
 }
 

@@ -8,8 +8,8 @@
 #![no_main]
 
 use cortex_m_rt::entry;
-use soft3d::blend::AlphaBlend;
-use soft3d::effect::{BlinnPhong, Flat, FragmentCount, Gouraud, MonoGouraud, Phong, Textured, VertexColor};
+use soft3d::blend::{AlphaBlend, Opaque};
+use soft3d::effect::{BlinnPhong, Flat, FragmentCount, Gouraud, GrayLight, MonoGouraud, Phong, Textured, VertexColor};
 use soft3d::material::{Affine, DepthLess, DepthOff, PerPixel, PerSpan};
 use soft3d::scenes::study::CHECKER;
 use soft3d::texture::{Bilinear, Clamp, Nearest, Repeat};
@@ -46,6 +46,8 @@ fn main() -> ! {
     common::measure(t, renderer, "all", "blinn-phong", |frame| common::draw_scene(frame, &blinn));
     let textured = common::materials::<Textured<'static, Nearest, Repeat>, PerSpan<32>, DepthLess>(Textured::new(CHECKER));
     common::measure(t, renderer, "all", "textured", |frame| common::draw_scene(frame, &textured));
+    let gray = common::materials::<Textured<'static, Nearest, Repeat, Opaque, GrayLight>, PerSpan<32>, DepthLess>(Textured::new(CHECKER));
+    common::measure(t, renderer, "all", "textured-gray", |frame| common::draw_scene(frame, &gray));
     let blended = Textured::<'static, Bilinear, Clamp, AlphaBlend>::new(CHECKER).with_opacity(160);
     let blended = common::materials::<_, PerPixel, DepthLess>(blended);
     common::measure(t, renderer, "all", "textured-blend", |frame| common::draw_scene(frame, &blended));
