@@ -5,8 +5,8 @@
 //! ray-cast reference. Wrapping, clamping, odd sizes and bilinear borders
 //! are hard cases: tests/hard_cases/texture.rs.
 
-use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::pixelcolor::{Rgb565, RgbColor};
 use soft3d::blend::Opaque;
 use soft3d::effect::{ColorLight, GrayLight, LightModel, Textured};
 use soft3d::host::Image;
@@ -140,7 +140,8 @@ fn perspective_correct_mapping_matches_the_ray_cast_and_affine_does_not() {
 /// lit as `L` says by `lights` on a material of `color`.
 fn lit_crate<S: Settings, L: LightModel>(lights: &Lights, color: Rgb888) -> Image<Rgb565> {
     use soft3d::scenes::crate_scene::{CRATE, CRATE_TEXTURE};
-    let material = Material::new(Textured::<Nearest, Repeat, Opaque, L>::new(CRATE_TEXTURE)).with_color(color).with_perspective::<PerSpan<32>>();
+    let material =
+        Material::new(Textured::<Nearest, Repeat, Opaque, L>::new(CRATE_TEXTURE)).with_color(color).with_perspective::<PerSpan<32>>();
     let camera = Camera::looking_at(Vec3::new(0.0, 1.5, -3.5), Vec3::new(0.0, 0.0, 0.0));
     let model = Mat4::rotation_y(0.7) * Mat4::rotation_x(0.3);
     let mut r: HostRenderer<Rgb565, 5, S> = HostRenderer::new(160, 120, 16, 64, 64, Rgb565::BLACK).unwrap();
@@ -181,9 +182,17 @@ fn gray_light_draws_the_color_light_image_of_the_green_channel() {
             let colored = lit_crate::<S, ColorLight>(lights, color);
             let covered = (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| gray.get(x, y) != Rgb565::BLACK).count();
             assert!(covered > 3000, "{}: the crate covers {covered} pixels", <S::Interp as soft3d::math::Interp>::NAME);
-            assert!(gray == same, "{}, {color:?}: gray light differs from the green channel's color light", <S::Interp as soft3d::math::Interp>::NAME);
+            assert!(
+                gray == same,
+                "{}, {color:?}: gray light differs from the green channel's color light",
+                <S::Interp as soft3d::math::Interp>::NAME
+            );
             let differ = (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| gray.get(x, y) != colored.get(x, y)).count();
-            assert!(differ > covered / 2, "{}: colored lights changed only {differ} of {covered} pixels", <S::Interp as soft3d::math::Interp>::NAME);
+            assert!(
+                differ > covered / 2,
+                "{}: colored lights changed only {differ} of {covered} pixels",
+                <S::Interp as soft3d::math::Interp>::NAME
+            );
         }
     }
     check::<FixedPoint>(&lights);

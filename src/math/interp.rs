@@ -9,7 +9,7 @@
 //! derived from those three numbers with [`Interp::plane_at`] and
 //! [`Interp::plane_within`], so stepping and checking agree exactly.
 
-use super::{dot_wide, mul_wide, reciprocal_q61, shr_wide, Fixed};
+use super::{dot_wide, mul_wide, reciprocal_q61, shl_wide, shr_wide, Fixed};
 
 /// A number type that plane equations are stepped in.
 ///
@@ -164,13 +164,14 @@ pub struct FloatBasis {
 #[derive(Clone, Copy, Debug)]
 pub struct FixedBasis {
     k: [i32; 4],
-    /// In `1..=62`.
+    /// In `1..=62`, or 0 for gradients too steep for 32 bits whatever the
+    /// values (a sliver far thinner than a pixel): [`Interp::gradients`]
+    /// saturates them. (Not a flag of its own: a `bool` after the other
+    /// fields left padding that ARMv6-M copied with a library call per
+    /// triangle.)
     shift: u32,
     /// `2^(shift - 1)`, for rounding.
     half: i64,
-    /// Gradients too steep for 32 bits whatever the values (a sliver far
-    /// thinner than a pixel): [`Interp::gradients`] saturates them.
-    steep: bool,
     /// A bound on how far stepping from the first vertex can land from
     /// the value at another vertex (in units of 2^-16, from the
     /// coefficients' error: see [`Interp::clear_of_bounds`]), or a large
@@ -181,7 +182,7 @@ pub struct FixedBasis {
 impl FixedBasis {
     #[inline(always)]
     fn new([ox1, oy1, ox2, oy2]: [i32; 4], area2: i64, f: u32) -> Self {
-        const STEEP: FixedBasis = FixedBasis { k: [0; 4], shift: 1, half: 0, steep: true, margin: i32::MAX };
+        const STEEP: FixedBasis = FixedBasis { k: [0; 4], shift: 0, half: 0, margin: i32::MAX };
         let area = area2.unsigned_abs();
         if area == 0 {
             return STEEP;
@@ -189,7 +190,7 @@ impl FixedBasis {
         // 1 / area = r * 2^(n - 93), r in (2^29, 2^30), from the area's
         // top 32 bits `m`.
         let n = super::leading_zeros_u64(area);
-        let r = reciprocal_q61(((area << n) >> 32) as u32);
+        let r = reciprocal_q61((shl_wide(area, n) >> 32) as u32);
         let r2 = if area2 < 0 { -(r << 1) } else { r << 1 };
         // Offsets below 2^t, t <= 30: each coefficient o r 2^-t is the high
         // word of (o 2^(31 - t)) (2 r), below 2^30 (one multiply-high).
@@ -216,12 +217,18 @@ impl FixedBasis {
         // Never above 62: t + n >= 63 - t (the area is below 2^(2t + 1)),
         // so shift <= 59.
         let shift = shift.min(62) as u32;
-        Self { k: [k(oy2), k(-oy1), k(-ox2), k(ox1)], shift, half: 1 << (shift - 1), steep: false, margin }
+        Self { k: [k(oy2), k(-oy1), k(-ox2), k(ox1)], shift, half: shl_wide(1, shift - 1) as i64, margin }
+    }
+
+    /// Whether the gradients are too steep for 32 bits (see `shift`).
+    #[inline(always)]
+    fn is_steep(&self) -> bool {
+        self.shift == 0
     }
 
     #[inline(always)]
     fn gradients(&self, a: Fixed, b: Fixed, c: Fixed) -> (Fixed, Fixed) {
-        if self.steep {
+        if self.is_steep() {
             return (Fixed::from_bits(i32::MAX), Fixed::from_bits(i32::MAX));
         }
         // Values outside every range saturate here; the range check then
@@ -839,7 +846,7 @@ mod tests {
                 }
                 if got.to_bits() == i32::MAX {
                     // Saturated: only where the basis itself is too steep.
-                    assert!(basis.steep, "{o:?} {area2} f={f}: saturated at {exact}");
+                    assert!(basis.is_steep(), "{o:?} {area2} f={f}: saturated at {exact}");
                     continue;
                 }
                 // Rounding, and each coefficient within 4 units of its

@@ -135,6 +135,29 @@ fn shr_wide_by_words(v: i64, s: u32) -> i64 {
     }
 }
 
+/// `v << s` for `s < 64` (bits shifted out are lost), by words on ARMv6-M
+/// as [`shr_wide`].
+#[inline(always)]
+pub(crate) fn shl_wide(v: u64, s: u32) -> u64 {
+    if cfg!(soft3d_armv6m) {
+        shl_wide_by_words(v, s)
+    } else {
+        v << s
+    }
+}
+
+#[inline(always)]
+fn shl_wide_by_words(v: u64, s: u32) -> u64 {
+    let (low, high) = (v as u32, (v >> 32) as u32);
+    if s >= 32 {
+        ((low << (s - 32)) as u64) << 32
+    } else if s == 0 {
+        v
+    } else {
+        (((high << s) | (low >> (32 - s))) as u64) << 32 | (low << s) as u64
+    }
+}
+
 /// `v.leading_zeros()`, which ARMv6-M (no `CLZ` instruction) turns into a
 /// library call of some 50 instructions; two or three compares and a
 /// 256-byte table cost about 9 there. Elsewhere it is the instruction.
@@ -400,6 +423,7 @@ mod tests {
         for v in values.into_iter().chain(randoms) {
             for s in 0..64 {
                 assert_eq!(shr_wide_by_words(v, s), v >> s, "{v} >> {s}");
+                assert_eq!(shl_wide_by_words(v as u64, s), (v as u64) << s, "{v} << {s}");
             }
         }
     }

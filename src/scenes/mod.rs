@@ -3,9 +3,9 @@
 //! compile time, and a crate baked by the bake tool ([`crate_scene`]).
 
 use crate::blend::Opaque;
-use crate::effect::{Color, Gouraud, LightModel, MonoGouraud, Textured};
 #[cfg(doc)]
 use crate::effect::GrayLight;
+use crate::effect::{Color, Gouraud, LightModel, MonoGouraud, Textured};
 use crate::material::{Material, PerSpan};
 use crate::math::{Mat4, Vec3};
 use crate::mesh::{sphere_index_count, sphere_vertex_count, torus_index_count, torus_vertex_count, Mesh, MeshData};

@@ -31,7 +31,7 @@
 //! clipper too.
 
 use super::{all_finite, BEHIND_NEAR, BEYOND_FAR, NOT_FINITE, OUTSIDE_GUARD};
-use crate::math::{mul_wide, mul_wide_short, reciprocal_q61, Mat4, Vec4};
+use crate::math::{mul_wide, mul_wide_short, reciprocal_q61, shr_wide, Mat4, Vec4};
 use crate::mesh::{Sphere, Vectors};
 use crate::raster::{guard, ScreenVertex};
 
@@ -252,7 +252,7 @@ impl<'a> IntegerProjection<'a> {
     #[inline(always)]
     fn snap(&self, axis: usize, v: i32, r: i32, n: u32) -> Option<i32> {
         // v / w in units of 2^-QUOTIENT_BITS half sub-pixels (below 2^61).
-        let quotient = mul_wide(v, r) >> (self.base[axis] - n);
+        let quotient = shr_wide(mul_wide(v, r), self.base[axis] - n);
         // floor((v / w + W 2^f + 1) / 2): snap's rounding to nearest.
         let s = (quotient + self.offset[axis]) >> (QUOTIENT_BITS + 1);
         if s >= -self.limit && s <= self.limit {
@@ -291,7 +291,7 @@ impl<'a> IntegerProjection<'a> {
                     if let (Some(sx), Some(sy)) = (self.snap(0, x, r, n), self.snap(1, y, r, n)) {
                         // 1 / w = r 2^(n - 61 + s), and z / w = (z r) 2^(n - 61),
                         // in [0, 1] but for the reciprocal's error.
-                        let depth = ((mul_wide(z, r) >> (31 - n)) as u32).min(1 << 30);
+                        let depth = (shr_wide(mul_wide(z, r), 31 - n) as u32).min(1 << 30);
                         *out = ScreenVertex {
                             x: sx,
                             y: sy,
