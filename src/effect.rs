@@ -105,6 +105,11 @@ pub trait Effect: Copy {
     /// levels of 0 to 255) instead of the vertex's color lit, for an
     /// effect that applies its color per pixel.
     const LIT_WHITE: bool = false;
+    /// Which channels of [`VertexInput::lit`] (red, green, blue) the
+    /// effect reads: the vertex stage computes only those (the others are
+    /// left zero), which matters where lighting is integer products in
+    /// software (ARMv6-M).
+    const LIT_CHANNELS: [bool; 3] = [true; 3];
     /// Name for reports.
     const NAME: &'static str;
 
@@ -178,7 +183,8 @@ pub(crate) fn lit_by(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb
 #[inline(always)]
 pub(crate) fn lit_input<C: Color, E: Effect>(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
     let (l, s) = (lit_by(lights, position, normal, color), E::lit_scale::<C>());
-    [l[0] * s[0] + 0.5, l[1] * s[1] + 0.5, l[2] * s[2] + 0.5]
+    let channel = |k: usize| if E::LIT_CHANNELS[k] { l[k] * s[k] + 0.5 } else { 0.0 };
+    [channel(0), channel(1), channel(2)]
 }
 
 /// Light times color, per channel, in [0, 255]: the light is clamped to
@@ -318,6 +324,7 @@ impl Effect for MonoGouraud {
     const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
     const LIT_WHITE: bool = true;
+    const LIT_CHANNELS: [bool; 3] = [false, true, false];
     const NAME: &'static str = "gouraud-mono";
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
         let mut r = [(0.0, 0.0); MAX_VARYINGS];
@@ -448,6 +455,19 @@ pub trait LightModel {
     const CHANNELS: &'static [usize];
 }
 
+/// Channel numbers (0 red, 1 green, 2 blue) as flags.
+const fn channel_set(channels: &[usize]) -> [bool; 3] {
+    let mut set = [false; 3];
+    let mut k = 0;
+    while k < channels.len() {
+        if channels[k] < 3 {
+            set[channels[k]] = true;
+        }
+        k += 1;
+    }
+    set
+}
+
 /// [`Textured`] interpolates the lit color's red, green and blue: colored
 /// lights and materials are lit exactly.
 #[derive(Clone, Copy, Debug, Default)]
@@ -509,6 +529,7 @@ impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, 
     const LIT_VERTICES: bool = true;
     const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
+    const LIT_CHANNELS: [bool; 3] = channel_set(L::CHANNELS);
     const NAME: &'static str = if L::CHANNELS.len() == 1 { "textured-gray" } else { "textured" };
 
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {

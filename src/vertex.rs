@@ -162,7 +162,7 @@ impl LitColor for IntegerLighting<'_> {
     #[cfg_attr(soft3d_armv6m, inline(never))]
     #[cfg_attr(not(soft3d_armv6m), inline(always))]
     fn lit<C: Color, E: Effect>(&self, i: usize, _: Vec3, _: Vec3, color: Rgb888) -> [f32; 3] {
-        IntegerLighting::lit(self, i, color)
+        IntegerLighting::lit(self, i, color, E::LIT_CHANNELS)
     }
 }
 

@@ -86,14 +86,17 @@ impl<'a> IntegerLighting<'a> {
 
     /// [`VertexInput::lit`](crate::effect::VertexInput::lit) of vertex
     /// `i` of color `color`: computed in units of 2^-23 (below 2^31),
-    /// truncated to `f32`.
+    /// truncated to `f32`, in the `channels` flagged (the others zero).
     #[inline(always)]
-    pub fn lit(&self, i: usize, color: Rgb888) -> [f32; 3] {
+    pub fn lit(&self, i: usize, color: Rgb888, channels: [bool; 3]) -> [f32; 3] {
         let (direction, sun) = self.sun;
         // Each product at most 2^60, and so is the sum (both vectors unit).
         let dot = self.dot_normal(i, direction);
         let facing = ((dot.clamp(0, 1 << 60) + (1 << 29)) >> 30) as i32;
         let channel = |k: usize, c: u8| {
+            if !channels[k] {
+                return 0.0;
+            }
             // Both terms below 2^31: their sum fits 32 bits unsigned.
             let term = ((mul_wide(sun[k], facing) + (1 << 29)) >> 30) as u32;
             let light = (self.ambient[k] as u32 + term).min(self.cap[k]);
@@ -149,7 +152,7 @@ mod tests {
                 } else {
                     lit_input::<Rgb565, crate::effect::Flat>(&lighting, Vec3::ZERO, *n, color)
                 };
-                for (g, w) in integer.lit(i, color).iter().zip(want) {
+                for (g, w) in integer.lit(i, color, [true; 3]).iter().zip(want) {
                     worst = worst.max((g - w).abs());
                 }
             }
