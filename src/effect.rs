@@ -328,7 +328,7 @@ impl Effect for MonoGouraud {
     const NAME: &'static str = "gouraud-mono";
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
         let mut r = [(0.0, 0.0); MAX_VARYINGS];
-        r[0] = channel_range(255);
+        r[0] = LIGHT_RANGE;
         r
     }
     #[inline(always)]
@@ -519,8 +519,11 @@ impl<'a, F: Filter, W: Wrap, B: Blend, L: LightModel> Textured<'a, F, W, B, L> {
 /// Range of a texture coordinate in texel units: what 16.16 fixed point
 /// holds, with room for a span's steps.
 const TEXEL_RANGE: (f32, f32) = (-30_000.0, 30_000.0);
-/// Range of a light channel: its integer part scales a texel by `(l + 1) / 256`.
+/// Range of an interpolated light level of 0 to 255 (`channel_range(255)`):
+/// its integer part scales a texel by `(l + 1) / 256`, or a material
+/// channel ([`MonoGouraud`]).
 const LIGHT_RANGE: (f32, f32) = (0.0, 255.996);
+const _: () = assert!(LIGHT_RANGE.0 == channel_range(255).0 && LIGHT_RANGE.1 == channel_range(255).1);
 
 impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, B, L> {
     type Uniforms<S: Interp> = ();
