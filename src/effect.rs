@@ -447,12 +447,28 @@ pub struct Textured<'a, F = Nearest, W = Repeat, B = Opaque, L = ColorLight> {
     _modes: core::marker::PhantomData<(F, W, B, L)>,
 }
 
-/// How many lit channels [`Textured`] interpolates (see [`ColorLight`] and
-/// [`GrayLight`]).
-pub trait LightModel {
+/// How many lit channels [`Textured`] interpolates: [`ColorLight`] or
+/// [`GrayLight`]. Sealed: `Textured` reads its varyings by these two
+/// layouts (three channels in order, or one level).
+///
+/// ```compile_fail
+/// // Another model does not compile: the trait is sealed.
+/// struct BlueLight;
+/// impl soft3d::effect::LightModel for BlueLight {
+///     const CHANNELS: &'static [usize] = &[2];
+/// }
+/// ```
+pub trait LightModel: sealed::Sealed {
     /// The channels of [`VertexInput::lit`] interpolated (0 red, 1 green,
     /// 2 blue); with one, it lights all three.
     const CHANNELS: &'static [usize];
+}
+
+mod sealed {
+    /// Implemented by the light models only.
+    pub trait Sealed {}
+    impl Sealed for super::ColorLight {}
+    impl Sealed for super::GrayLight {}
 }
 
 /// Channel numbers (0 red, 1 green, 2 blue) as flags.
