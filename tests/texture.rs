@@ -176,23 +176,18 @@ fn gray_light_draws_the_color_light_image_of_the_green_channel() {
         directional: Some(DirectionalLight { direction: Vec3::new(0.5, -0.8, 0.6), color: Vec3::new(0.3, 0.5, 0.6) }),
     };
     fn check<S: Settings>(lights: &Lights) {
+        let name = <S::Interp as soft3d::math::Interp>::NAME;
+        let count =
+            |pixel: &dyn Fn(u32, u32) -> bool| (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| pixel(x, y)).count();
         for color in [Rgb888::WHITE, Rgb888::new(150, 150, 150)] {
             let gray = lit_crate::<S, GrayLight>(lights, color);
             let same = lit_crate::<S, ColorLight>(&grayed(lights), color);
             let colored = lit_crate::<S, ColorLight>(lights, color);
-            let covered = (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| gray.get(x, y) != Rgb565::BLACK).count();
-            assert!(covered > 3000, "{}: the crate covers {covered} pixels", <S::Interp as soft3d::math::Interp>::NAME);
-            assert!(
-                gray == same,
-                "{}, {color:?}: gray light differs from the green channel's color light",
-                <S::Interp as soft3d::math::Interp>::NAME
-            );
-            let differ = (0..120).flat_map(|y| (0..160).map(move |x| (x, y))).filter(|&(x, y)| gray.get(x, y) != colored.get(x, y)).count();
-            assert!(
-                differ > covered / 2,
-                "{}: colored lights changed only {differ} of {covered} pixels",
-                <S::Interp as soft3d::math::Interp>::NAME
-            );
+            let covered = count(&|x, y| gray.get(x, y) != Rgb565::BLACK);
+            assert!(covered > 3000, "{name}: the crate covers {covered} pixels");
+            assert!(gray == same, "{name}, {color:?}: gray light differs from the green channel's color light");
+            let differ = count(&|x, y| gray.get(x, y) != colored.get(x, y));
+            assert!(differ > covered / 2, "{name}: colored lights changed only {differ} of {covered} pixels");
         }
     }
     check::<FixedPoint>(&lights);
