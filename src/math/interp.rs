@@ -9,7 +9,7 @@
 //! derived from those three numbers with [`Interp::plane_at`] and
 //! [`Interp::plane_within`], so stepping and checking agree exactly.
 
-use super::{dot_wide, mul_wide, reciprocal_q61, shl_wide, shr_wide, Fixed};
+use super::{dot_wide, high_word_of_shifted_product, mul_wide, reciprocal_q61, shl_wide, shr_wide, Fixed};
 
 /// A number type that plane equations are stepped in.
 ///
@@ -197,7 +197,7 @@ impl FixedBasis {
         let span = ox1.unsigned_abs() | oy1.unsigned_abs() | ox2.unsigned_abs() | oy2.unsigned_abs();
         let t = 32 - super::leading_zeros(span);
         let up = 31 - t;
-        let k = |o: i32| (mul_wide(o << up, r2) >> 32) as i32;
+        let k = |o: i32| high_word_of_shifted_product(o, up, r2);
         // dx = (d1 oy2 - d2 oy1) r 2^(f + n - 93) = (d1 k0 + d2 k1) 2^(t + f + n - 93).
         let shift = 93 - (t + f + n) as i32;
         if shift < 1 {
@@ -512,7 +512,7 @@ impl Interp for Fixed {
         // (1 - z) * 65534 + 1.5 halved, in units of 2^-16: the product is
         // below 2^46 and the result below 2^31.
         let z = Fixed::scaled_truncated(z, 30).clamp(0, 1 << 30);
-        Fixed::from_bits(((mul_wide((1 << 30) - z, 65534) >> 15) + (3 << 14)) as i32)
+        Fixed::from_bits(halved_depth_bits(((1 << 30) - z) as u32))
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -639,10 +639,29 @@ impl Interp for Fixed {
     }
 }
 
+/// `floor(x 65534 / 2^15) + 1.5 2^15` for `x = (1 - z) 2^30` in `[0,
+/// 2^30]`: the fixed-point depth's bits. As `2x - ceil(x / 2^14)`, with
+/// no product (a 64-bit one is four multiplies by halves on ARMv6-M, three
+/// per triangle); the result is below 2^31.
+#[inline(always)]
+fn halved_depth_bits(x: u32) -> i32 {
+    (2 * x - ((x + (1 << 14) - 1) >> 14) + (3 << 14)) as i32
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::math::xorshift;
+
+    #[test]
+    fn halved_depth_needs_no_product() {
+        let mut next = xorshift(0x68E3_1DA4);
+        let edges = [0, 1, (1 << 14) - 1, 1 << 14, (1 << 14) + 1, (1 << 30) - 1, 1 << 30];
+        for x in edges.into_iter().chain((0..100_000).map(|_| next() >> 2)) {
+            let product = ((x as i64 * 65534) >> 15) + (3 << 14);
+            assert_eq!(halved_depth_bits(x) as i64, product, "{x}");
+        }
+    }
 
     #[test]
     fn f32_gradients_stay_finite_where_the_area_cancels() {

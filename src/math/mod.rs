@@ -74,6 +74,29 @@ fn halves_times_short(a: i32, b: i32) -> (i64, i64) {
     (((a >> 16) * b) as i64, ((a & 0xFFFF) * b) as i64)
 }
 
+/// The high word of `(o << up) * r`, for `|o| < 2^(31 - up)` (so that the
+/// shift loses nothing). Where `up >= 16` and the core has no long
+/// multiply (ARMv6-M), `o << up` is a short value times `2^16` and the
+/// word is two 32-bit products (`r`'s halves times it, see
+/// [`halves_times_short`]), not four by halves and a 64-bit shift: the
+/// same bits.
+#[inline(always)]
+pub(crate) fn high_word_of_shifted_product(o: i32, up: u32, r: i32) -> i32 {
+    if cfg!(soft3d_armv6m) && up >= 16 {
+        high_word_of_short_product(o << (up - 16), r)
+    } else {
+        (mul_wide(o << up, r) >> 32) as i32
+    }
+}
+
+/// `((s 2^16) r) >> 32` for a short `s`: `s r = high 2^16 + low`, so the
+/// word is `high + floor(low / 2^16)`, every step within 32 bits.
+#[inline(always)]
+fn high_word_of_short_product(s: i32, r: i32) -> i32 {
+    let (high, low) = halves_times_short(r, s);
+    (high + (low >> 16)) as i32
+}
+
 /// `a * b + c * d` exactly. On ARMv6-M one call of two products by halves
 /// costs less than two calls of the library's 64×64-bit multiply and,
 /// unlike products inlined at each of the triangle setup's many uses,
@@ -424,6 +447,19 @@ mod tests {
             for s in 0..64 {
                 assert_eq!(shr_wide_by_words(v, s), v >> s, "{v} >> {s}");
                 assert_eq!(shl_wide_by_words(v as u64, s), (v as u64) << s, "{v} << {s}");
+            }
+        }
+    }
+
+    #[test]
+    fn high_words_of_short_products_are_exact() {
+        let mut next = xorshift(0x2545_F491);
+        let edges = [0, 1, -1, (1 << 15) - 1, -(1 << 15), i32::MAX, i32::MIN, 1 << 30, -(1 << 30)];
+        let randoms: std::vec::Vec<(i32, i32)> = (0..100_000).map(|_| ((next() as i32) >> (next() % 32), (next() as i32) >> 16)).collect();
+        for (r, s) in edges.map(|r| (r, 12_345)).into_iter().chain(randoms) {
+            for s in [s, 0, 1, -1, (1 << 15) - 1, -(1 << 15)] {
+                let exact = ((((s as i64) << 16) * r as i64) >> 32) as i32;
+                assert_eq!(high_word_of_short_product(s, r), exact, "({s} << 16) * {r}");
             }
         }
     }
