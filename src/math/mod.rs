@@ -295,8 +295,29 @@ pub(crate) fn reciprocal_q61(m: u32) -> i32 {
 /// it but for the step's truncations.
 #[inline(always)]
 pub(crate) fn reciprocal_q61_coarse(m: u32) -> u32 {
-    let r0 = (RECIPROCALS[(m >> 23) as usize & 0xFF] as u32) << 14;
-    newton_q61(m, r0)
+    let t = RECIPROCALS[(m >> 23) as usize & 0xFF] as u32;
+    if cfg!(soft3d_armv6m) {
+        newton_q61_from_table(m, t)
+    } else {
+        newton_q61(m, t << 14)
+    }
+}
+
+/// [`newton_q61`] from `r = t 2^14` with `t` from the 16-bit table, in
+/// 32-bit arithmetic (ARMv6-M has no long multiply): `m t` and `r e` are a
+/// factor's halves times `t`, two multiplies each rather than four. The
+/// same bits.
+#[inline(always)]
+fn newton_q61_from_table(m: u32, t: u32) -> u32 {
+    // m t = high 2^16 + low, each part within 32 bits (t < 2^16).
+    let (high, low) = ((m >> 16) * t, (m & 0xFFFF) * t);
+    // e = 2^61 - m t 2^14 is below 2^52 in magnitude (the table is within
+    // 2^-9), so e >> 22 = 2^39 - ceil(m t / 2^8) fits 32 bits, and those
+    // are the low bits of -ceil(m t / 2^8) (low + 255 cannot overflow).
+    let e = (high << 8).wrapping_add((low + 255) >> 8).wrapping_neg() as i32;
+    // r e 2^-39 = t e 2^-25, with t e = high 2^16 + low again.
+    let (high, low) = ((e >> 16) * t as i32, (e as u32 & 0xFFFF) * t);
+    ((t << 14) as i32 + ((high + (low >> 16) as i32) >> 9)) as u32
 }
 
 /// One Newton step toward `2^61 / m` from `r` (below `2^30`, within 2^-8
@@ -448,6 +469,18 @@ mod tests {
                 assert_eq!(shr_wide_by_words(v, s), v >> s, "{v} >> {s}");
                 assert_eq!(shl_wide_by_words(v as u64, s), (v as u64) << s, "{v} << {s}");
             }
+        }
+    }
+
+    #[test]
+    fn newton_steps_from_the_table_are_exact() {
+        let mut next = xorshift(0x3C6E_F372);
+        // Both ends of every table entry's interval (where its estimate is
+        // furthest off), and random ones.
+        let ends = (0..256u32).flat_map(|i| [(1 << 31) | i << 23, (1 << 31) | i << 23 | ((1 << 23) - 1)]);
+        for m in ends.chain((0..100_000).map(|_| next() | (1 << 31))) {
+            let t = RECIPROCALS[(m >> 23) as usize & 0xFF] as u32;
+            assert_eq!(newton_q61_from_table(m, t), newton_q61(m, t << 14), "{m:#x}");
         }
     }
 
