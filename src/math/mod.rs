@@ -74,6 +74,34 @@ fn halves_times_short(a: i32, b: i32) -> (i64, i64) {
     (((a >> 16) * b) as i64, ((a & 0xFFFF) * b) as i64)
 }
 
+/// `a · b` exactly, for entries within `±2^30`. On ARMv6-M the three
+/// products by 16-bit halves are summed part by part (the high parts'
+/// sum fits 32 bits, as does each pair of middle parts), so that only the
+/// middle and low sums and the end take 64-bit additions, not every
+/// product (the integer vertex stage's rows).
+#[inline(always)]
+pub(crate) fn dot3_wide(a: &[i32; 3], b: &[i32; 3]) -> i64 {
+    if cfg!(soft3d_armv6m) {
+        dot3_by_halves(a, b)
+    } else {
+        a[0] as i64 * b[0] as i64 + a[1] as i64 * b[1] as i64 + a[2] as i64 * b[2] as i64
+    }
+}
+
+#[inline(always)]
+fn dot3_by_halves(a: &[i32; 3], b: &[i32; 3]) -> i64 {
+    let (mut high, mut middle, mut low) = (0i32, 0i64, 0u64);
+    for (&a, &b) in a.iter().zip(b) {
+        // |ah|, |bh| <= 2^14 and al, bl < 2^16: ah bh within 2^28 (three
+        // of them within 2^30), ah bl + al bh within 2^31, al bl below 2^32.
+        let (ah, al, bh, bl) = (a >> 16, a & 0xFFFF, b >> 16, b & 0xFFFF);
+        high += ah * bh;
+        middle += (ah * bl + al * bh) as i64;
+        low += (al as u32 * bl as u32) as u64;
+    }
+    ((high as i64) << 32) + (middle << 16) + low as i64
+}
+
 /// The high word of `(o << up) * r`, for `|o| < 2^(31 - up)` (so that the
 /// shift loses nothing). Where `up >= 16` and the core has no long
 /// multiply (ARMv6-M), `o << up` is a short value times `2^16` and the
@@ -469,6 +497,21 @@ mod tests {
                 assert_eq!(shr_wide_by_words(v, s), v >> s, "{v} >> {s}");
                 assert_eq!(shl_wide_by_words(v as u64, s), (v as u64) << s, "{v} << {s}");
             }
+        }
+    }
+
+    #[test]
+    fn dots_of_three_by_halves_are_exact() {
+        let mut next = xorshift(0x7A3D_91C5);
+        let mut value = || match next() % 8 {
+            0 => 1 << 30,
+            1 => -(1 << 30),
+            _ => (next() as i32) >> (1 + next() % 31),
+        };
+        for _ in 0..100_000 {
+            let (a, b) = ([value(), value(), value()], [value(), value(), value()]);
+            let exact: i64 = a.iter().zip(&b).map(|(&a, &b)| a as i64 * b as i64).sum();
+            assert_eq!(dot3_by_halves(&a, &b), exact, "{a:?} · {b:?}");
         }
     }
 

@@ -31,7 +31,7 @@
 //! clipper too.
 
 use super::{all_finite, BEHIND_NEAR, BEYOND_FAR, NOT_FINITE, OUTSIDE_GUARD};
-use crate::math::{mul_wide, mul_wide_short, reciprocal_q61, shr_wide, Mat4, Vec4};
+use crate::math::{dot3_wide, mul_wide, mul_wide_short, reciprocal_q61, shr_wide, Mat4, Vec4};
 use crate::mesh::{Sphere, Vectors};
 use crate::raster::{guard, ScreenVertex};
 
@@ -218,7 +218,7 @@ impl<'a> IntegerProjection<'a> {
             Input::F32(p, k) => {
                 let v = p.get(i)?;
                 let p = [scaled_rounded(v.x, k, INPUT_MAX)?, scaled_rounded(v.y, k, INPUT_MAX)?, scaled_rounded(v.z, k, INPUT_MAX)?];
-                Some(self.rows_dot(|l| mul_wide(l[0], p[0]) + mul_wide(l[1], p[1]) + mul_wide(l[2], p[2])))
+                Some(self.rows_dot(|l| dot3_wide(l, &p)))
             }
             // The input is `q 2^15`: a row times the 16-bit steps, then
             // shifted (two 16×16-bit multiplies a product on ARMv6-M, not four).
