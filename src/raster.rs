@@ -229,9 +229,14 @@ struct EdgeWalker {
 }
 
 impl EdgeWalker {
+    /// A walker that is never read (where [`Rows`] divides per row).
+    const IDLE: Self = Self { bound: 0, err: 0, step_q: 0, step_r: 0, d: 1 };
+
     /// Edge from `a` down to `b` (`b.y > a.y`), positioned at pixel row `row`.
     /// Not inlined: its six copies (three per rasterizer) cost the RP2040
     /// firmware 10 KB of flash for 0.2% of `torus.babylon` on the M0+.
+    /// (Where there is a divide instruction, [`Rows`] divides per row
+    /// instead; the walker is checked against that in the tests.)
     #[inline(never)]
     fn new(ax: i32, ay: i32, bx: i32, by: i32, row: i32, f: u32) -> Self {
         let half = 1i32 << (f - 1);
@@ -240,9 +245,8 @@ impl EdgeWalker {
         // Only descending edges are walked (a row center lies between
         // their ends). Tested all the same where there is a divide
         // instruction: the divisions then need no test for zero or
-        // overflow (torus.babylon f32 on the M4F 1.9% quicker; ARMv6-M
-        // divides by steps, without such tests, and the test measured
-        // 0.4% slower there).
+        // overflow (ARMv6-M divides by steps, without such tests, and
+        // the test measured 0.4% slower there).
         if !cfg!(soft3d_armv6m) && dy <= 0 {
             return Self { bound: 0, err: 0, step_q: 0, step_r: 0, d: 1 };
         }
@@ -628,9 +632,15 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
     }
 }
 
-/// Walks a sorted triangle's rows within a strip with exact edge DDAs,
-/// yielding each non-empty span of pixels `x0..x1` (clipped to the strip's
-/// width) as `(y, x0, x1)`.
+/// A sorted triangle's rows within a strip, yielding each non-empty span of
+/// pixels `x0..x1` (clipped to the strip's width) as `(y, x0, x1)`.
+///
+/// Each row's bounds are the exact `ceil` of [`edge_start`]. Where there
+/// is a divide instruction they are computed row by row, two divisions a
+/// row: the triangles of a mesh on a small screen cover a row or two
+/// each, and setting up two [`EdgeWalker`]s (two divisions each, and a
+/// third for the middle vertex) cost more than that. ARMv6-M divides by
+/// steps and walks the edges.
 struct Rows<'t, const V: usize> {
     t: &'t Sorted<'t, V>,
     long: EdgeWalker,
@@ -644,13 +654,21 @@ struct Rows<'t, const V: usize> {
     f: u32,
 }
 
+/// Whether [`Rows`] walks edges rather than dividing per row.
+const WALK_EDGES: bool = cfg!(soft3d_armv6m);
+
 impl<'t, const V: usize> Rows<'t, V> {
     #[inline(always)]
     fn new(t: &'t Sorted<'t, V>, y0: i32, rows: i32, width: i32, f: u32) -> Self {
         let (a, b, c) = (t.a, t.b, t.c);
         let y = t.y_top.max(y0);
-        let long = EdgeWalker::new(a.x, a.y, c.x, c.y, y, f);
-        let short = if y < t.y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y, f) };
+        let (long, short) = if WALK_EDGES {
+            let long = EdgeWalker::new(a.x, a.y, c.x, c.y, y, f);
+            let short = if y < t.y_mid { EdgeWalker::new(a.x, a.y, b.x, b.y, y, f) } else { EdgeWalker::new(b.x, b.y, c.x, c.y, y, f) };
+            (long, short)
+        } else {
+            (EdgeWalker::IDLE, EdgeWalker::IDLE)
+        };
         let y_switch = if y < t.y_mid { t.y_mid } else { i32::MIN };
         Self { t, long, short, y, y_end: t.y_bot.min(y0 + rows), y_switch, width, f }
     }
@@ -660,18 +678,26 @@ impl<'t, const V: usize> Rows<'t, V> {
     fn next_span(&mut self) -> Option<(i32, i32, i32)> {
         while self.y < self.y_end {
             let y = self.y;
-            if y == self.y_switch {
-                // Below the middle vertex the short side is its lower edge.
-                let (b, c) = (self.t.b, self.t.c);
-                self.short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, self.f);
-            }
-            let (left, right) = if self.t.mid_left { (&self.short, &self.long) } else { (&self.long, &self.short) };
+            let (long, short) = if WALK_EDGES {
+                if y == self.y_switch {
+                    // Below the middle vertex the short side is its lower edge.
+                    let (b, c) = (self.t.b, self.t.c);
+                    self.short = EdgeWalker::new(b.x, b.y, c.x, c.y, y, self.f);
+                }
+                let bounds = (self.long.bound, self.short.bound);
+                self.long.step();
+                self.short.step();
+                bounds
+            } else {
+                let (a, b, c) = (self.t.a, self.t.b, self.t.c);
+                let (top, bottom) = if y < self.t.y_mid { (a, b) } else { (b, c) };
+                (bound_at(a, c, y, self.f), bound_at(top, bottom, y, self.f))
+            };
+            let (left, right) = if self.t.mid_left { (short, long) } else { (long, short) };
             // `max` and `min`, not `clamp`: with bounds known only at run
             // time, `clamp` asserts at every call that they are ordered.
-            let x0 = left.bound.max(0).min(self.width);
-            let x1 = right.bound.max(0).min(self.width);
-            self.long.step();
-            self.short.step();
+            let x0 = left.max(0).min(self.width);
+            let x1 = right.max(0).min(self.width);
             self.y += 1;
             if x0 < x1 {
                 return Some((y, x0, x1));
@@ -679,6 +705,28 @@ impl<'t, const V: usize> Rows<'t, V> {
         }
         None
     }
+}
+
+/// The bound at pixel row `row` of the edge from `a` down to `b` (whose
+/// row centers it spans): what an [`EdgeWalker`] gives there.
+#[inline(always)]
+fn bound_at<const V: usize>(a: &ScreenVertex<V>, b: &ScreenVertex<V>, row: i32, f: u32) -> i32 {
+    let half = 1i32 << (f - 1);
+    let (from, dx, dy, t) = (a.x - half, b.x - a.x, b.y - a.y, (row << f) + half - a.y);
+    let m = mul_wide(from, dy) + mul_wide(dx, t);
+    match i32::try_from(m) {
+        Ok(m) => div_ceil_rem(m as i64, dy << f).0,
+        Err(_) => wide_bound(from, dx, dy, t, f),
+    }
+}
+
+/// [`bound_at`] for an edge too long for its 32-bit numerator: the whole
+/// pixels of `from` are taken out first, and what is left fits 32 bits
+/// for any triangle on screen (a 64-bit division is a library call).
+#[cold]
+#[inline(never)]
+fn wide_bound(from: i32, dx: i32, dy: i32, t: i32, f: u32) -> i32 {
+    edge_start(from, dx, dy, t, f, true).0
 }
 
 impl<C, Z> StripTarget<'_, C, Z> {
@@ -1147,6 +1195,36 @@ mod tests {
             let mut w = EdgeWalker::new(3, ay, 40, by, 0, f);
             w.step();
         }
+    }
+
+    #[test]
+    fn rows_divided_give_what_walkers_give() {
+        // Edges from a pixel long to the guard band's reach (whose
+        // numerators leave 32 bits: `wide_bound`), at the default
+        // sub-pixel bits, each walked over its first rows and a later run.
+        let (bits, f) = (6, 7);
+        let mut next = crate::math::xorshift(0x1F83_D9AB);
+        let vertex = |x: i32, y: i32| ScreenVertex::<0> { x, y, z: 0.0, q: 1.0, attrs: [] };
+        let mut wide = 0;
+        let limit = guard(bits);
+        for case in 0..20_000u32 {
+            let reach = 1i32 << (8 + case % 15);
+            let mut coordinate = || (next() % (2 * reach as u32)) as i32 - reach;
+            let (ax, ay, bx) = (coordinate(), coordinate(), coordinate());
+            let by = (ay + 1 + (next() % reach as u32) as i32).min(limit);
+            let (a, b) = (vertex(ax, ay), vertex(bx, by));
+            let (first, end) = (first_row_at_or_below(ay, bits), first_row_at_or_below(by, bits));
+            for start in [first, first + (end - first) / 2] {
+                let mut walker = EdgeWalker::new(ax, ay, bx, by, start, f);
+                for row in start..end.min(start + 8) {
+                    assert_eq!(bound_at(&a, &b, row, f), walker.bound, "{ax},{ay} -> {bx},{by} row {row}");
+                    walker.step();
+                    let m = (ax - 64) as i64 * (by - ay) as i64 + (bx - ax) as i64 * ((row << f) + 64 - ay) as i64;
+                    wide += i32::try_from(m).is_err() as u32;
+                }
+            }
+        }
+        assert!(wide > 10_000, "only {wide} rows took the wide path");
     }
 
     #[test]
