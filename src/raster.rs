@@ -336,7 +336,8 @@ impl<S: Interp> Plane<S> {
         // (ARMv6-M): with a long multiply the check measured cheaper than
         // this test (torus.babylon on the M4F: 1.17 M instructions a frame
         // against 1.29 M; on the M0+ 7.64 M against 7.30 M).
-        *clear &= cfg!(soft3d_armv6m) && S::clear_of_bounds(&shape.basis, a, b, c, lo, hi);
+        // (Not tested again once a plane has failed it.)
+        *clear = *clear && cfg!(soft3d_armv6m) && S::clear_of_bounds(&shape.basis, a, b, c, lo, hi);
         Self { at_a: a, dx: gx, dy: gy, lo, hi, wide: None }
     }
 

@@ -393,7 +393,7 @@ fn recommendation(results: &Results, target: &Target) -> String {
     let _ = writeln!(
         r,
         "- **Sub-pixel bits: 6, the default of both settings.** Against 4: {}, pixels covered wrongly {} → {}, with {} \
-         (M4F: no measurable cost); 8 adds {} more but shrinks the guard band to 2,048 pixels (32,768 at 6).",
+         (M4F); 8 adds {} more but shrinks the guard band to 2,048 pixels (32,768 at 6).",
         db(e("fixed-6-span16-nearest-gouraud", &shaded), e("fixed-4-span16-nearest-gouraud", &shaded)),
         e("fixed-4-span16-nearest-gouraud", &shaded).map_or(0, |e| e.coverage),
         e(fixed, &shaded).map_or(0, |e| e.coverage),
