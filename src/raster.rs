@@ -641,7 +641,8 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
 /// row: the triangles of a mesh on a small screen cover a row or two
 /// each, and setting up two [`EdgeWalker`]s (two divisions each, and a
 /// third for the middle vertex) cost more than that. ARMv6-M divides by
-/// steps and walks the edges.
+/// steps and walks the edges (dividing per row measured `monkey` 3.5%
+/// slower there).
 struct Rows<'t, const V: usize> {
     t: &'t Sorted<'t, V>,
     long: EdgeWalker,

@@ -499,7 +499,7 @@ impl Interp for Fixed {
         let inner = |v: u32| v.wrapping_sub(lo).wrapping_sub(margin) <= inner_width;
         // `&&`, not `&`: only ARMv6-M calls this, which has no conditional
         // execution, and a boolean made of a compare takes a branch there
-        // anyway (`torus.babylon` 1.2% fewer instructions).
+        // anyway (`torus.babylon` on the M0+ 1.2% fewer instructions).
         let constant = b == a && c == a;
         a.wrapping_sub(lo) <= width && (constant || (width >= 2 * margin && inner(b) && inner(c)))
     }
