@@ -528,25 +528,30 @@ where
         // Counted once here, not per triangle in `assemble` (a store per
         // triangle in the hot loop).
         self.stats.triangles += (idx.len() / 3) as u32;
+        let lights = &lights;
         for t in idx.chunks_exact(3) {
-            let local = [t[0] as usize, t[1] as usize, t[2] as usize];
-            let corners = [(base + local[0]) as u16, (base + local[1]) as u16, (base + local[2]) as u16];
-            let face = if E::USES_FACE {
+            let corners = [(base + t[0] as usize) as u16, (base + t[1] as usize) as u16, (base + t[2] as usize) as u16];
+            // Lit only if the triangle is queued (not for the back faces).
+            let face = move || {
+                if !E::USES_FACE {
+                    return Rgb888::BLACK;
+                }
                 // Geometric normal in model space, to world by the normal matrix.
-                let (a, b, c) = (p(local[0]), p(local[1]), p(local[2]));
+                let (a, b, c) = (p(t[0] as usize), p(t[1] as usize), p(t[2] as usize));
                 let normal = stage.normal_matrix.transform((b - a).cross(c - a)).normalize_or_zero();
                 let position = model.transform_point3((a + b + c) * (1.0 / 3.0));
-                let color = mesh.colors().map_or(material.color, |cs| cs[local[0]]);
-                material.effect.face(&FaceInput { position, normal, color }, &lights)
-            } else {
-                Rgb888::BLACK
+                let color = mesh.colors().map_or(material.color, |cs| cs[t[0] as usize]);
+                material.effect.face(&FaceInput { position, normal, color }, lights)
             };
+            // The indices from `t`: arrays of them captured by reference were
+            // written to the stack for every triangle, for this rare path
+            // (`torus.babylon`, M4F `f32`: 4 k instructions a frame).
             let res = self.assemble(corners, face, material.cull, P::CORRECT, |vi| {
-                let i = local[vi];
+                let i = t[vi] as usize;
                 ClipVertex {
                     pos: vertices.clip_position(stage, mesh, i),
                     attrs: vertices.varyings::<E, C, V>(stage, mesh, i),
-                    src: corners[vi],
+                    src: (base + i) as u16,
                 }
             });
             if let Err(e) = res {
@@ -632,7 +637,7 @@ where
     fn assemble(
         &mut self,
         corners: Corners,
-        face: Rgb888,
+        face: impl Fn() -> Rgb888,
         cull: Cull,
         perspective: bool,
         clip_vertex: impl Fn(usize) -> ClipVertex<V>,
@@ -674,7 +679,7 @@ where
             return Ok(());
         }
         let window: Polygon<WindowVertex<V>> = poly.iter().map(|v| clip::to_window(v, self.b.width as f32, self.b.height as f32)).collect();
-        self.emit_polygon(window, face, cull, perspective)
+        self.emit_polygon(window, face(), cull, perspective)
     }
 
     /// Snaps a convex window-space polygon (clipping it to the guard band
@@ -729,15 +734,17 @@ where
                 self.stats.degenerate += 1;
                 continue;
             }
-            self.emit([idx[0], idx[k], idx[k + 1]], face, cull)?;
+            self.emit([idx[0], idx[k], idx[k + 1]], || face, cull)?;
         }
         Ok(())
     }
 
     /// Culls a snapped triangle (degenerate, back-facing, off screen) or
-    /// queues it. Inlined into the draw loop, the hot path of geometry.
+    /// queues it with its color `face()`, called only then (a flat effect
+    /// lights a face per call). Inlined into the draw loop, the hot path
+    /// of geometry.
     #[inline(always)]
-    fn emit(&mut self, corners: Corners, face: Rgb888, cull: Cull) -> Result<(), DrawError> {
+    fn emit(&mut self, corners: Corners, face: impl Fn() -> Rgb888, cull: Cull) -> Result<(), DrawError> {
         let vs = &self.b.vertices;
         let [a, b, c] = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];
         let area = signed_area2(a, b, c);
@@ -767,6 +774,7 @@ where
         // instruction (ARMv6-M) a division is a library call.
         let strip = self.b.strip;
         let s = if strip.is_power_of_two() { first as usize >> strip.trailing_zeros() } else { first as usize / strip };
+        let face = face();
         let rec = TriRecord { v: corners, next: s as u16, face: [face.r(), face.g(), face.b()] };
         let capacity = self.b.triangles.len();
         *self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })? = rec;

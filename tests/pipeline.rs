@@ -4,8 +4,11 @@
 
 use embedded_graphics::mock_display::MockDisplay;
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
-use soft3d::effect::{FragmentCount, Gouraud};
+use soft3d::effect::{Color, Effect, FaceInput, Flat, FragmentCount, Gouraud, VertexInput, MAX_VARYINGS};
 use soft3d::host::Image;
+use soft3d::math::Interp;
+use soft3d::scene::Lighting;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod common;
 use common::golden;
@@ -219,4 +222,56 @@ fn ram_formula_matches_size_of() {
     assert_eq!(size_of::<Renderer<Rgb565, 320, 240, 16, 1000, 1200, 3, Deep>>(), formula(320, 240, 16, 1000, 1200, 3, (2, 4)));
     type Float = soft3d::Precision<f32, 6, soft3d::DepthF32>;
     assert_eq!(size_of::<Renderer<Rgb565, 100, 50, 10, 10, 10, 5, Float>>(), formula(100, 50, 10, 10, 10, 5, (2, 4)));
+}
+
+/// `Flat`, counting the faces it is asked to light.
+#[derive(Clone, Copy, Default)]
+struct CountingFlat;
+
+static FACES_LIT: AtomicUsize = AtomicUsize::new(0);
+
+impl Effect for CountingFlat {
+    const VARYINGS: usize = Flat::VARYINGS;
+    const LIT_VERTICES: bool = Flat::LIT_VERTICES;
+    const USES_FACE: bool = Flat::USES_FACE;
+    const NAME: &'static str = "counting-flat";
+    type Uniforms<S: Interp> = ();
+    fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
+    fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS] {
+        Flat.vertex::<C>(v, lights)
+    }
+    fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888 {
+        FACES_LIT.fetch_add(1, Ordering::Relaxed);
+        Flat.face(f, lights)
+    }
+    fn shade<C: Color, S: Interp>(&self, _: &(), face: C, v: &[S; MAX_VARYINGS], dst: C) -> C {
+        Flat.shade::<C, S>(&(), face, v, dst)
+    }
+}
+
+/// A cube seen from a corner with `effect`: the faces lit, the triangles
+/// queued and the frame.
+fn cube_from_a_corner<E: Effect>(effect: E) -> (usize, u32, Image<Rgb565>) {
+    static CUBE: MeshData<24, 36> = MeshData::cube(1.0);
+    let camera = Camera::looking_at(Vec3::new(2.0, 2.5, -3.0), Vec3::ZERO);
+    let mut r: HostRenderer<Rgb565, 3, FixedPoint> = HostRenderer::new(64, 64, 8, 64, 64, Rgb565::BLACK).unwrap();
+    let material = Material::new(effect).with_color(Rgb888::new(200, 120, 40));
+    FACES_LIT.store(0, Ordering::Relaxed);
+    let mut frame = r.begin_frame(&camera, &Lights::default(), Rgb565::BLACK);
+    frame.draw(&CUBE.mesh(), &Mat4::IDENTITY, &material).unwrap();
+    let mut img = Image::new(64, 64, Rgb565::BLACK);
+    let Ok(stats) = frame.finish(&mut img);
+    (FACES_LIT.load(Ordering::Relaxed), stats.queued, img)
+}
+
+#[test]
+fn flat_faces_are_lit_only_for_the_triangles_queued() {
+    // Three faces (six triangles) toward the camera, three culled.
+    // Lighting a face costs a normalization and the lights (library
+    // calls on a core without an FPU): the culled ones are not lit.
+    let (lit, queued, counted) = cube_from_a_corner(CountingFlat);
+    assert_eq!((lit, queued), (6, 6), "faces lit and triangles queued, of 12");
+    // The frame is `Flat`'s.
+    let (_, _, flat) = cube_from_a_corner(Flat);
+    assert!(counted == flat);
 }
