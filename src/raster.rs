@@ -487,8 +487,26 @@ impl<const V: usize> Sorted<'_, V> {
     }
 }
 
+/// Orders a triangle's corners by `y` (top first) as [`rasterize`] takes
+/// them: sorted once when the triangle is queued, not at every strip it is
+/// drawn in. Equal `y`s keep their order.
+#[inline(always)]
+pub fn sort_by_y<T: Copy>(mut t: [T; 3], y: impl Fn(T) -> i32) -> [T; 3] {
+    if y(t[0]) > y(t[1]) {
+        t.swap(0, 1);
+    }
+    if y(t[1]) > y(t[2]) {
+        t.swap(1, 2);
+    }
+    if y(t[0]) > y(t[1]) {
+        t.swap(0, 1);
+    }
+    t
+}
+
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
-/// `P` and depth mode `D`, stepping attributes in `S`.
+/// `P` and depth mode `D`, stepping attributes in `S`. `tri` is sorted by
+/// `y`, top first (see [`sort_by_y`]); the winding does not matter.
 ///
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
@@ -519,17 +537,8 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     Z: DepthFormat,
 {
     let f = subpixel_bits + 1;
-    // Sort by y: a top, b middle, c bottom.
-    let [mut a, mut b, mut c] = tri;
-    if a.y > b.y {
-        core::mem::swap(&mut a, &mut b);
-    }
-    if b.y > c.y {
-        core::mem::swap(&mut b, &mut c);
-    }
-    if a.y > b.y {
-        core::mem::swap(&mut a, &mut b);
-    }
+    // Sorted by y when queued (see `sort_by_y`): a top, b middle, c bottom.
+    let [a, b, c] = tri;
     let area = signed_area2(a, b, c);
     if area == 0 {
         return;

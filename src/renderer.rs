@@ -136,10 +136,13 @@ pub struct FrameStats {
 /// materials. Implemented for every [`Material`]; each implementation is a
 /// separate monomorphized span loop.
 pub trait MaterialProgram<C, S: Settings, const V: usize> {
-    /// Rasterizes one triangle into a strip, lit by `lights` (the draw
-    /// call's, for effects that light pixels). `face` is the triangle's
-    /// RGB color, read only by effects that use one.
-    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: &[u8; 3], lights: &Lighting);
+    /// Rasterizes into a strip the triangles `queue` holds next, up to
+    /// (not including) triangle index `end` (where the next draw call
+    /// starts), lit by `lights` (the draw call's, for effects that light
+    /// pixels). One call per strip and draw call, not per triangle: the
+    /// material's uniforms are set up once, and the triangle loop calls
+    /// its rasterizer directly.
+    fn rasterize_run(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, queue: &mut StripQueue<'_, V>, end: u16, lights: &Lighting);
 }
 
 impl<C, S, E, P, D, const V: usize> MaterialProgram<C, S, V> for Material<E, P, D>
@@ -150,11 +153,71 @@ where
     P: Perspective,
     D: DepthMode,
 {
-    fn rasterize(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, tri: [&ScreenVertex<V>; 3], face: &[u8; 3], lights: &Lighting) {
+    fn rasterize_run(&self, target: &mut StripTarget<'_, C, DepthValue<S>>, queue: &mut StripQueue<'_, V>, end: u16, lights: &Lighting) {
         let uniforms = self.effect.uniforms::<S::Interp>(lights, self.color);
-        // Read and converted only for effects that use it.
-        let face = if E::USES_FACE { C::from(Rgb888::new(face[0], face[1], face[2])) } else { C::BLACK };
-        raster::rasterize::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS)
+        while let Some((tri, face)) = queue.pop_before(end) {
+            // Read and converted only for effects that use it.
+            let face = if E::USES_FACE { C::from(Rgb888::new(face[0], face[1], face[2])) } else { C::BLACK };
+            raster::rasterize::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS);
+        }
+    }
+}
+
+/// The triangles one strip draws, in submission order: those binned to
+/// it merged with those carried over from the strip above. Triangles that
+/// reach below the strip are carried over to the next one as they are
+/// taken.
+pub struct StripQueue<'q, const V: usize> {
+    tris: &'q mut [TriRecord],
+    vertices: &'q [ScreenVertex<V>],
+    /// Heads of the two lists: binned here, carried from above.
+    fresh: u16,
+    old: u16,
+    /// The list carried to the next strip.
+    next_head: u16,
+    next_tail: u16,
+    /// The frame row below the strip.
+    strip_end: i32,
+    /// Sub-pixel bits of the snapped vertices.
+    bits: u32,
+}
+
+impl<const V: usize> StripQueue<'_, V> {
+    /// Index of the next triangle, `NONE` when there is none.
+    #[inline(always)]
+    fn peek(&self) -> u16 {
+        self.fresh.min(self.old)
+    }
+
+    /// The next triangle's vertices and face color, if its index is below
+    /// `end`.
+    #[inline(always)]
+    fn pop_before(&mut self, end: u16) -> Option<([&ScreenVertex<V>; 3], [u8; 3])> {
+        // Merge the two lists by index (an empty list's head, NONE, is
+        // above every index).
+        let i = self.peek();
+        if i >= end {
+            return None;
+        }
+        let rec = *self.tris.get(i as usize)?;
+        if i == self.fresh {
+            self.fresh = rec.next;
+        } else {
+            self.old = rec.next;
+        }
+        let vs = self.vertices;
+        let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
+        // (Corners are sorted by y: the last is the lowest.)
+        if first_row_at_or_below(tri[2].y, self.bits) > self.strip_end {
+            self.tris[i as usize].next = NONE;
+            if self.next_tail == NONE {
+                self.next_head = i;
+            } else {
+                self.tris[self.next_tail as usize].next = i;
+            }
+            self.next_tail = i;
+        }
+        Some((tri, rec.face))
     }
 }
 
@@ -757,8 +820,13 @@ where
             return Ok(());
         }
         let bits = S::SUBPIXEL_BITS;
-        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).max(0).min(self.b.height as i32);
-        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).max(0).min(self.b.height as i32);
+        // Sorted by y for the rasterizer, once here rather than at every
+        // strip it is drawn in.
+        let sorted = raster::sort_by_y([(corners[0], a.y), (corners[1], b.y), (corners[2], c.y)], |(_, y)| y);
+        let corners = sorted.map(|(i, _)| i);
+        let (top, bottom) = (sorted[0].1, sorted[2].1);
+        let first = first_row_at_or_below(top, bits).max(0).min(self.b.height as i32);
+        let end = first_row_at_or_below(bottom, bits).max(0).min(self.b.height as i32);
         // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
         let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
         let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
@@ -817,43 +885,40 @@ where
                 rows: rows as i32,
                 dirty: (width, 0),
             };
-            let (mut fresh, mut old) = (b.heads[s], carried);
-            let (mut next_head, mut next_tail) = (NONE, NONE);
-            // The draw call of triangle `i`, and where the next one starts.
+            let mut queue = StripQueue {
+                tris: &mut *tris,
+                vertices: &*b.vertices,
+                fresh: b.heads[s],
+                old: carried,
+                next_head: NONE,
+                next_tail: NONE,
+                strip_end: (y0 + rows) as i32,
+                bits,
+            };
+            // The draw call of the next triangle, and where the next one
+            // starts.
             let mut draw = 0;
             let mut next_draw = draws.get(1).map_or(NONE, |d| d.1);
-            // Merge the two lists by index, i.e. in submission order (an
-            // empty list's head, NONE, is above every index).
             loop {
-                let i = fresh.min(old);
-                let Some(&rec) = tris.get(i as usize) else {
+                let i = queue.peek();
+                if i == NONE {
                     break;
-                };
-                if i == fresh {
-                    fresh = rec.next;
-                } else {
-                    old = rec.next;
                 }
                 while i >= next_draw {
                     draw += 1;
                     next_draw = draws.get(draw + 1).map_or(NONE, |d| d.1);
                 }
-                let vs = &b.vertices;
-                let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
-                let (program, _, lights) = &draws[draw];
-                program.rasterize(&mut strip, tri, &tris[i as usize].face, lights);
-                let bottom = tri[0].y.max(tri[1].y).max(tri[2].y);
-                if first_row_at_or_below(bottom, bits) > (y0 + rows) as i32 {
-                    tris[i as usize].next = NONE;
-                    if next_tail == NONE {
-                        next_head = i;
-                    } else {
-                        tris[next_tail as usize].next = i;
-                    }
-                    next_tail = i;
+                let Some((program, _, lights)) = draws.get(draw) else {
+                    break;
+                };
+                program.rasterize_run(&mut strip, &mut queue, next_draw, lights);
+                if queue.peek() == i {
+                    // Only if a list held an index past the records (it
+                    // cannot): stop rather than loop.
+                    break;
                 }
             }
-            carried = next_head;
+            carried = queue.next_head;
             let area = Rectangle::new(Point::new(0, y0 as i32), Size::new(width as u32, rows as u32));
             let sent = target.fill_contiguous(&area, strip.color.iter().copied());
             clean_columns::<C, S::Depth>(strip, background);
