@@ -539,15 +539,14 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     let f = subpixel_bits + 1;
     // Sorted by y when queued (see `sort_by_y`): a top, b middle, c bottom.
     let [a, b, c] = tri;
+    debug_assert!(a.y <= b.y && b.y <= c.y, "rasterize takes corners sorted by y");
     let area = signed_area2(a, b, c);
     if area == 0 {
         return;
     }
     let y_top = first_row_at_or_below(a.y, subpixel_bits);
     let y_bot = first_row_at_or_below(c.y, subpixel_bits);
-    if y_top.max(target.y0) >= y_bot.min(target.y0 + target.rows) {
-        return;
-    }
+    // (A triangle whose rows miss the strip's finds no span below.)
     // With y down, a negative area puts the middle vertex left of the long edge.
     let t = Sorted { a, b, c, area2: area, mid_left: area < 0, y_top, y_mid: first_row_at_or_below(b.y, subpixel_bits), y_bot };
     let width = target.width as i32;
@@ -1015,6 +1014,19 @@ fn no_unroll() {
     core::hint::black_box(());
 }
 
+/// `v`, as a value the compiler cannot trace back to where it came from
+/// (`black_box`: on Arm it emits no instruction, but `v` passes through
+/// the stack once). A span loop's steps so obtained start new live ranges
+/// at the span: LLVM's register allocator then gives them registers in
+/// the pixel loop rather than to values of the row loop around it
+/// (M4F, fixed point: `wall-gouraud` 27.1 instructions a pixel against
+/// 31.0 without, `fill` 2,063,080 instructions against 2,358,760; on
+/// ARMv6-M it measured slower, +0.3% on `torus.babylon`).
+#[inline(always)]
+fn opaque<T>(v: T) -> T {
+    core::hint::black_box(v)
+}
+
 /// `floor` for any finite `f32` (values from 2^23 up are integers).
 #[inline]
 fn floor(v: f32) -> f32 {
@@ -1125,6 +1137,11 @@ fn span<C, S, E, P, D, Z, const CLAMP: bool>(
         }
         return;
     }
+    // In fixed point, where there are shifted operands (not ARMv6-M), the
+    // steps are taken as new values at each span: its pixel loop then
+    // keeps them in registers instead of reloading them at every pixel
+    // (see `opaque`).
+    let (z_dx, v_dx) = if S::WRAPS && !cfg!(soft3d_armv6m) { opaque((z_dx, *v_dx)) } else { (z_dx, *v_dx) };
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
         no_unroll();
         let zq = Z::store(z);
@@ -1153,6 +1170,25 @@ fn span<C, S, E, P, D, Z, const CLAMP: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn corners_sort_by_y_keeping_ties_in_order() {
+        // Every order of three values with and without ties.
+        for ys in [[0, 1, 2], [0, 0, 1], [0, 1, 1], [5, 5, 5]] {
+            for p in [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]] {
+                let corners = p.map(|i| (ys[i], i));
+                let sorted = sort_by_y(corners, |(y, _)| y);
+                assert_eq!(sorted.map(|(y, _)| y), ys, "{corners:?}");
+                // Equal ys keep the order they came in.
+                for k in 0..2 {
+                    if sorted[k].0 == sorted[k + 1].0 {
+                        let at = |c: (i32, usize)| corners.iter().position(|&x| x == c);
+                        assert!(at(sorted[k]) < at(sorted[k + 1]), "{corners:?} -> {sorted:?}");
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn snapping_rounds_to_the_grid_and_rejects_the_far() {
