@@ -207,8 +207,8 @@ impl<const V: usize> StripQueue<'_, V> {
         }
         let vs = self.vertices;
         let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
-        // (Corners are sorted by y: the last is the lowest.)
-        if first_row_at_or_below(tri[2].y, self.bits) > self.strip_end {
+        let bottom = tri[0].y.max(tri[1].y).max(tri[2].y);
+        if first_row_at_or_below(bottom, self.bits) > self.strip_end {
             self.tris[i as usize].next = NONE;
             if self.next_tail == NONE {
                 self.next_head = i;
@@ -820,13 +820,8 @@ where
             return Ok(());
         }
         let bits = S::SUBPIXEL_BITS;
-        // Sorted by y for the rasterizer, once here rather than at every
-        // strip it is drawn in.
-        let sorted = raster::sort_by_y([(corners[0], a.y), (corners[1], b.y), (corners[2], c.y)], |(_, y)| y);
-        let corners = sorted.map(|(i, _)| i);
-        let (top, bottom) = (sorted[0].1, sorted[2].1);
-        let first = first_row_at_or_below(top, bits).max(0).min(self.b.height as i32);
-        let end = first_row_at_or_below(bottom, bits).max(0).min(self.b.height as i32);
+        let first = first_row_at_or_below(a.y.min(b.y).min(c.y), bits).max(0).min(self.b.height as i32);
+        let end = first_row_at_or_below(a.y.max(b.y).max(c.y), bits).max(0).min(self.b.height as i32);
         // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
         let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
         let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
