@@ -488,10 +488,7 @@ impl<const V: usize> Sorted<'_, V> {
 }
 
 /// Orders a triangle's corners by `y`, top first, as [`rasterize`] walks
-/// them. Equal `y`s keep their order. (Sorting once, when a triangle is
-/// queued, measured 1.8% fewer instructions on `torus.babylon` in `f32`,
-/// M4F, but took the general firmware of `scripts/effects-bench.sh` past
-/// its 1% on the flat scene: the draw loop's registers.)
+/// them. Equal `y`s keep their order.
 #[inline(always)]
 pub fn sort_by_y<T: Copy>(mut t: [T; 3], y: impl Fn(T) -> i32) -> [T; 3] {
     if y(t[0]) > y(t[1]) {
@@ -506,9 +503,21 @@ pub fn sort_by_y<T: Copy>(mut t: [T; 3], y: impl Fn(T) -> i32) -> [T; 3] {
     t
 }
 
+/// Whether triangles are queued with their corners sorted by `y` (on
+/// ARMv6-M), or sorted by [`rasterize`] at each strip they are drawn in.
+/// Measured with the same frames: sorted when queued, `torus.babylon` in
+/// fixed point on the M0+ took 2,161,120 instructions against 2,277,840
+/// (`monkey` 3,444,960 against 3,616,080); on the M4F `torus.babylon` in
+/// `f32` 586,800 against 597,320, but there the general firmware of
+/// `scripts/effects-bench.sh` then drew the flat scene in 1.40% more
+/// instructions than the flat-only one (0.73% with the sort here), past
+/// the 1% a scene may pay for effects it does not use: the registers of
+/// the draw loop.
+pub const SORTED_WHEN_QUEUED: bool = cfg!(soft3d_armv6m);
+
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
-/// `P` and depth mode `D`, stepping attributes in `S`, its corners in any
-/// order.
+/// `P` and depth mode `D`, stepping attributes in `S`. Its corners come
+/// sorted by `y` if [`SORTED_WHEN_QUEUED`], else in any order.
 ///
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
@@ -539,8 +548,10 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     Z: DepthFormat,
 {
     let f = subpixel_bits + 1;
-    // Sort by y: a top, b middle, c bottom.
-    let [a, b, c] = sort_by_y(tri, |v| v.y);
+    // Sorted by y (where not already, see `SORTED_WHEN_QUEUED`): a top,
+    // b middle, c bottom.
+    let [a, b, c] = if SORTED_WHEN_QUEUED { tri } else { sort_by_y(tri, |v| v.y) };
+    debug_assert!(a.y <= b.y && b.y <= c.y);
     let area = signed_area2(a, b, c);
     if area == 0 {
         return;
