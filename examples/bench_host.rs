@@ -39,18 +39,16 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
     // Scenes quantized to i16, as the firmware bakes them.
     for (name, file) in QUANTIZED_SCENES {
         if let Some((_, scene)) = files.iter().find(|(n, _)| *n == file) {
-            let camera = scene.camera_or_default();
-            let meshes: Vec<_> = scene.meshes.iter().map(|m| (m.quantized().expect("the file's vectors are finite"), m.model)).collect();
-            let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
-            for (m, model) in &meshes {
-                frame.draw(&m.mesh(), model, &WHITE).expect("the scene fits its buffers");
-            }
-            print_frame(name, mode, frame);
+            quantized_scene(&mut r, name, mode, scene, &WHITE);
         }
     }
     for (name, file) in MONO_SCENES {
         if let Some((_, scene)) = files.iter().find(|(n, _)| *n == file) {
             file_scene(&mut r, name, mode, scene, &WHITE_MONO);
+        } else if let Some((_, source)) = QUANTIZED_SCENES.iter().find(|(n, _)| *n == file) {
+            if let Some((_, scene)) = files.iter().find(|(n, _)| n == source) {
+                quantized_scene(&mut r, name, mode, scene, &WHITE_MONO);
+            }
         }
     }
     // The monkey with its texture, as the firmware bakes it.
@@ -61,6 +59,24 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
         file_scene(&mut r, TEXTURED_SCENES[2], mode, monkey, &textured::<PerPixel, GrayLight>(texture));
         file_scene(&mut r, TEXTURED_SCENES[3], mode, monkey, &textured::<PerSpan<32>, GrayLight>(texture));
     }
+}
+
+/// Renders a file scene quantized to `i16` with its camera and `material`
+/// and prints its line.
+fn quantized_scene<S: Settings, E: Effect>(
+    r: &mut HostRenderer<Rgb565, DEMO_VARYINGS, S>,
+    name: &str,
+    mode: &str,
+    scene: &HostScene,
+    material: &Material<E>,
+) {
+    let camera = scene.camera_or_default();
+    let meshes: Vec<_> = scene.meshes.iter().map(|m| (m.quantized().expect("the file's vectors are finite"), m.model)).collect();
+    let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
+    for (m, model) in &meshes {
+        frame.draw(&m.mesh(), model, material).expect("the scene fits its buffers");
+    }
+    print_frame(name, mode, frame);
 }
 
 /// Renders a file scene with its camera and `material` and prints its line.

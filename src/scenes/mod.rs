@@ -114,9 +114,19 @@ pub const FILE_SCENES: [(&str, &str); 2] = [("torus.babylon", "torus.babylon"), 
 /// three channels: the same lighting, each channel within one level.
 pub static WHITE_MONO: Material<MonoGouraud> = Material::new(MonoGouraud);
 
-/// The scenes of [`FILE_SCENES`] (named second, in the same order) drawn
-/// with [`WHITE_MONO`].
-pub const MONO_SCENES: [(&str, &str); 2] = [("torus.babylon-mono", "torus.babylon"), ("monkey-mono", "monkey")];
+/// Scenes of [`FILE_SCENES`] and [`QUANTIZED_SCENES`] (named second) drawn
+/// with [`WHITE_MONO`]. The last, the `i16` torus with one light level,
+/// is the two cheapest geometry and shading choices together, the setting
+/// for a white-lit scene on a core without an FPU.
+pub const MONO_SCENES: [(&str, &str); 3] =
+    [("torus.babylon-mono", "torus.babylon"), ("monkey-mono", "monkey"), ("torus.babylon-i16-mono", "torus.babylon-i16")];
+
+/// The place of scene `name` among [`FILE_SCENES`] then
+/// [`QUANTIZED_SCENES`] (the order the benchmarks store them in), if it is
+/// one of them.
+pub fn file_scene_index(name: &str) -> Option<usize> {
+    FILE_SCENES.iter().chain(&QUANTIZED_SCENES).position(|(n, _)| *n == name)
+}
 
 /// The torus of [`FILE_SCENES`] (the scene named second) from `i16`
 /// positions and normals, as `soft3d-bake --quantize i16` stores them: what

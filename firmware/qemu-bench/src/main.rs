@@ -63,13 +63,15 @@ fn run<S: Settings>(timer: &mut Timer, mode: &str) {
     {
         use soft3d::effect::{ColorLight, GrayLight};
         use soft3d::material::{PerPixel, PerSpan};
-        use soft3d::scenes::{textured, FILE_SCENES, MONO_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE, WHITE_MONO};
+        use soft3d::scenes::{file_scene_index, textured, FILE_SCENES, MONO_SCENES, QUANTIZED_SCENES, TEXTURED_SCENES, WHITE, WHITE_MONO};
         for (i, (name, _)) in FILE_SCENES.iter().chain(&QUANTIZED_SCENES).enumerate() {
             baked_scene(timer, &mut renderer, name, mode, ram, i, &WHITE);
         }
         // The same files with one interpolated light level.
-        for (i, (name, _)) in MONO_SCENES.iter().enumerate() {
-            baked_scene(timer, &mut renderer, name, mode, ram, i, &WHITE_MONO);
+        for (name, file) in MONO_SCENES {
+            if let Some(i) = file_scene_index(file) {
+                baked_scene(timer, &mut renderer, name, mode, ram, i, &WHITE_MONO);
+            }
         }
         // The monkey (the second file) with its texture.
         let texture = monkey_file::SUZANNE_TEXTURE;
