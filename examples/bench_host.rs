@@ -43,12 +43,13 @@ fn run<S: Settings>(mode: &str, files: &[(&str, HostScene)]) {
         }
     }
     for (name, file) in MONO_SCENES {
-        if let Some((_, scene)) = files.iter().find(|(n, _)| *n == file) {
+        // A quantized scene is drawn from the file it quantizes.
+        let source = QUANTIZED_SCENES.iter().find(|(n, _)| *n == file).map_or(file, |(_, f)| *f);
+        let Some((_, scene)) = files.iter().find(|(n, _)| *n == source) else { continue };
+        if source == file {
             file_scene(&mut r, name, mode, scene, &WHITE_MONO);
-        } else if let Some((_, source)) = QUANTIZED_SCENES.iter().find(|(n, _)| *n == file) {
-            if let Some((_, scene)) = files.iter().find(|(n, _)| n == source) {
-                quantized_scene(&mut r, name, mode, scene, &WHITE_MONO);
-            }
+        } else {
+            quantized_scene(&mut r, name, mode, scene, &WHITE_MONO);
         }
     }
     // The monkey with its texture, as the firmware bakes it.

@@ -128,13 +128,29 @@ fn perspective_texture_coordinates_on_a_large_wall() {
     }
 }
 
-/// `torus.babylon` from `../shared/assets` in fixed point, 320×240, from
-/// its camera under the headlight: drawn as the benchmark's
-/// `torus.babylon` (`f32` positions, `Gouraud`) and as its
+/// `meshes` (with their model matrices) drawn with `material` in fixed
+/// point at 320×240 in 16-row strips, from `camera` under the headlight.
+fn render_meshes<E: soft3d::effect::Effect>(
+    camera: &soft3d::Camera,
+    meshes: &[(soft3d::mesh::Mesh<'_>, soft3d::math::Mat4)],
+    material: &soft3d::Material<E>,
+) -> Image<Rgb565> {
+    let mut r: HostRenderer<Rgb565, 4, FixedPoint> = HostRenderer::new(320, 240, 16, 1100, 1800, Rgb565::BLACK).unwrap();
+    let mut img = Image::new(320, 240, Rgb565::MAGENTA);
+    let mut frame = r.begin_frame(camera, &soft3d::scenes::headlight(camera), Rgb565::BLACK);
+    for (mesh, model) in meshes {
+        frame.draw(mesh, model, material).unwrap();
+    }
+    let Ok(_) = frame.finish(&mut img);
+    img
+}
+
+/// `torus.babylon` from `../shared/assets` from its camera, drawn as the
+/// benchmark's `torus.babylon` (`f32` positions, `Gouraud`) and as its
 /// `torus.babylon-i16-mono` (`i16` positions and normals, `MonoGouraud`),
 /// or `None` if the file is absent.
 fn torus_exact_and_cheapest() -> Option<(Image<Rgb565>, Image<Rgb565>)> {
-    use soft3d::scenes::{headlight, WHITE, WHITE_MONO};
+    use soft3d::scenes::{WHITE, WHITE_MONO};
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/assets/torus.babylon");
     let scene = match soft3d::host::scene::HostScene::load(path) {
         Ok(scene) => scene,
@@ -144,21 +160,10 @@ fn torus_exact_and_cheapest() -> Option<(Image<Rgb565>, Image<Rgb565>)> {
         }
     };
     let camera = scene.camera_or_default();
-    let mut r: HostRenderer<Rgb565, 4, FixedPoint> = HostRenderer::new(320, 240, 16, 1100, 1800, Rgb565::BLACK).unwrap();
-    let mut exact = Image::new(320, 240, Rgb565::MAGENTA);
-    let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
-    for m in &scene.meshes {
-        frame.draw(&m.mesh(), &m.model, &WHITE).unwrap();
-    }
-    let Ok(_) = frame.finish(&mut exact);
+    let exact: Vec<_> = scene.meshes.iter().map(|m| (m.mesh(), m.model)).collect();
     let quantized: Vec<_> = scene.meshes.iter().map(|m| (m.quantized().unwrap(), m.model)).collect();
-    let mut cheapest = Image::new(320, 240, Rgb565::MAGENTA);
-    let mut frame = r.begin_frame(&camera, &headlight(&camera), Rgb565::BLACK);
-    for (m, model) in &quantized {
-        frame.draw(&m.mesh(), model, &WHITE_MONO).unwrap();
-    }
-    let Ok(_) = frame.finish(&mut cheapest);
-    Some((exact, cheapest))
+    let cheapest: Vec<_> = quantized.iter().map(|(q, model)| (q.mesh(), *model)).collect();
+    Some((render_meshes(&camera, &exact, &WHITE), render_meshes(&camera, &cheapest, &WHITE_MONO)))
 }
 
 /// Pixels drawn in both frames, of those the ones equal, pixels drawn in
