@@ -70,7 +70,11 @@ impl<'a> IntegerLighting<'a> {
             Vectors::I16 { steps, .. } => {
                 let s = steps.get(i).copied().unwrap_or([0; 3]);
                 let sum = mul_wide_short(d[0], s[0]) + mul_wide_short(d[1], s[1]) + mul_wide_short(d[2], s[2]);
-                return (sum << 15) + sum;
+                // Where a 64-bit product is a library call (ARMv6-M), LLVM
+                // folded the shift and the sum back into one (about 40
+                // instructions a vertex): the shifted sum is taken opaque.
+                let shifted = if cfg!(soft3d_armv6m) { core::hint::black_box(sum << 15) } else { sum << 15 };
+                return shifted + sum;
             }
             // Unit normals (checked when the mesh was built): finite, and
             // each component within [-1, 1] but for rounding.
