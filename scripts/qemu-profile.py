@@ -5,19 +5,28 @@
     scripts/qemu-profile.py MACHINE ELF SYMBOL-SUBSTRING   # blocks of one function
     scripts/qemu-profile.py MACHINE ELF --lines [TOP [SYMBOL-SUBSTRING]]  # per source line (innermost inlined frame)
     scripts/qemu-profile.py MACHINE ELF --annotate SYMBOL-SUBSTRING       # disassembly with executions per instruction
+    scripts/qemu-profile.py MACHINE ELF --by-count SYMBOL-SUBSTRING       # instructions grouped by how often each ran
 
 Runs ELF under qemu-system-arm -machine MACHINE (mps2-an386 or mps2-an385)
 with -d in_asm,exec,nochain, which logs every translated block (its
 instructions) and every block executed. Executions times block sizes,
 summed per symbol, give exact instruction counts per function (after
 inlining: a function's count includes what was inlined into it).
+
+--by-count splits one function's count by how many times each of its
+instructions ran: in `rasterize`, say, the instructions run once per
+triangle visit, once per row, once per span and once per pixel show up as
+groups whose execution counts are those numbers, which gives the cost of
+each level (instructions per visit, row, span, pixel) without counters in
+the code.
 """
 import collections, os, re, subprocess, sys, tempfile
 
 machine, elf = sys.argv[1], sys.argv[2]
 lines_mode = len(sys.argv) > 3 and sys.argv[3] == "--lines"
 annotate = len(sys.argv) > 3 and sys.argv[3] == "--annotate"
-if lines_mode or annotate:
+by_count = len(sys.argv) > 3 and sys.argv[3] == "--by-count"
+if lines_mode or annotate or by_count:
     del sys.argv[3]
 arg = sys.argv[3] if len(sys.argv) > 3 else "25"
 top = int(arg) if arg.isdigit() else None
@@ -51,6 +60,20 @@ with tempfile.TemporaryDirectory() as d:
             m = re.match(r"^Trace \d+: \S+ \[[0-9a-f]+/([0-9a-f]+)/", line)
             if m:
                 counts[int(m.group(1), 16)] += 1
+    if by_count:
+        # Executions of each instruction of the function, then per execution
+        # count: how many instructions ran that often, and their total.
+        groups = collections.Counter()
+        for pc, c in counts.items():
+            if arg in name.get(pc, ""):
+                groups[c] += len(addrs.get(pc, []))
+        total = sum(c * n for c, n in groups.items())
+        print(f"{total:>12,}  total")
+        print(f"{'runs':>10} {'instr':>6} {'total':>12}")
+        for c, n in sorted(groups.items(), key=lambda g: -g[0] * g[1]):
+            if c * n * 200 >= total:
+                print(f"{c:>10,} {n:>6} {c * n:>12,}  {100 * c * n / total:5.1f}%")
+        sys.exit(0)
     if annotate:
         per_pc = collections.Counter()
         for pc, c in counts.items():
