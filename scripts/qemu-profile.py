@@ -61,12 +61,16 @@ with tempfile.TemporaryDirectory() as d:
             if m:
                 counts[int(m.group(1), 16)] += 1
     if by_count:
-        # Executions of each instruction of the function, then per execution
-        # count: how many instructions ran that often, and their total.
-        groups = collections.Counter()
+        # Executions of each instruction of the function (summed over the
+        # translated blocks that hold it: a jump into the middle of a block
+        # starts another), then per execution count: how many instructions
+        # ran that often, and their total.
+        per_pc = collections.Counter()
         for pc, c in counts.items():
             if arg in name.get(pc, ""):
-                groups[c] += len(addrs.get(pc, []))
+                for a in addrs.get(pc, []):
+                    per_pc[a] += c
+        groups = collections.Counter(per_pc.values())
         total = sum(c * n for c, n in groups.items())
         print(f"{total:>12,}  total")
         print(f"{'runs':>10} {'instr':>6} {'total':>12}")
