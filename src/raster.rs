@@ -47,6 +47,18 @@ pub const fn guard(subpixel_bits: u32) -> i32 {
 /// `new > stored`; ties keep the first fragment, like a "less" test on z.
 pub(crate) const DEPTH_RANGE: f32 = 65534.0;
 
+/// Window depth 1 (the far plane) in [`ScreenVertex::z`]'s units of 2^-30.
+pub const DEPTH_ONE: u32 = 1 << 30;
+
+/// Window depth `z` (in `[0, 1]`, which rounding can leave by an ulp) in
+/// [`ScreenVertex::z`]'s units: times 2^30, truncated and clamped to
+/// `0..=DEPTH_ONE` (NaN gives 0). Exact for `z` from 2^-7 up: below, the
+/// bits lost are finer than any depth format stores.
+#[inline]
+pub fn window_depth(z: f32) -> u32 {
+    crate::math::Fixed::scaled_truncated(z, 30).clamp(0, DEPTH_ONE as i32) as u32
+}
+
 /// A vertex in window space, ready for setup.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ScreenVertex<const V: usize> {
@@ -54,8 +66,11 @@ pub struct ScreenVertex<const V: usize> {
     pub x: i32,
     /// Snapped y (down) in units of `2^-F` pixels.
     pub y: i32,
-    /// Window depth in [0, 1], smaller nearer.
-    pub z: f32,
+    /// Window depth in [0, 1], smaller nearer, in units of 2^-30 (at most
+    /// [`DEPTH_ONE`]; see [`window_depth`]): an integer, so that the vertex
+    /// stage converts it once and fixed point sets up depth planes with no
+    /// conversion per triangle.
+    pub z: u32,
     /// `1 / w` (clip-space w), for perspective-correct interpolation.
     pub q: f32,
     /// Varyings.
@@ -64,7 +79,7 @@ pub struct ScreenVertex<const V: usize> {
 
 impl<const V: usize> ScreenVertex<V> {
     /// A placeholder vertex.
-    pub const ZERO: Self = Self { x: 0, y: 0, z: 0.0, q: 0.0, attrs: [0.0; V] };
+    pub const ZERO: Self = Self { x: 0, y: 0, z: 0, q: 0.0, attrs: [0.0; V] };
 }
 
 /// Snaps a window coordinate (pixels) to the sub-pixel grid, in units of
@@ -1300,7 +1315,7 @@ mod tests {
         // sub-pixel bits, each walked over its first rows and a later run.
         let (bits, f) = (6, 7);
         let mut next = crate::math::xorshift(0x1F83_D9AB);
-        let vertex = |x: i32, y: i32| ScreenVertex::<0> { x, y, z: 0.0, q: 1.0, attrs: [] };
+        let vertex = |x: i32, y: i32| ScreenVertex::<0> { x, y, z: 0, q: 1.0, attrs: [] };
         let half = 1i64 << (f - 1);
         let mut wide = 0;
         let limit = guard(bits);

@@ -777,7 +777,7 @@ where
                 self.stats.invalid += 1;
                 return Ok(());
             };
-            let i = self.push_vertex(ScreenVertex { x, y, z: v.z, q: v.q, attrs: v.attrs })?;
+            let i = self.push_vertex(ScreenVertex { x, y, z: raster::window_depth(v.z), q: v.q, attrs: v.attrs })?;
             let _ = idx.push(i);
         }
         // Snapping can push a clipped polygon's nearly collinear vertices

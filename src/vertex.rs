@@ -211,7 +211,7 @@ pub(crate) fn project_into<const V: usize>(v: &ClipVertex<V>, width: f32, height
         let q = 1.0 / c.w;
         let (x, y) = ((c.x * q + 1.0) * 0.5 * width, (1.0 - c.y * q) * 0.5 * height);
         if let (Some(x), Some(y)) = (snap(x, subpixel_bits), snap(y, subpixel_bits)) {
-            *out = ScreenVertex { x, y, z: c.z * q, q, attrs: v.attrs };
+            *out = ScreenVertex { x, y, z: crate::raster::window_depth(c.z * q), q, attrs: v.attrs };
             return;
         }
         flags |= OUTSIDE_GUARD;

@@ -72,10 +72,11 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// Whether a gradient is too steep to step precisely (fixed point:
     /// beyond ±32,000 per pixel, near where 16.16 saturates); `f32` never is.
     fn is_wide(self) -> bool;
-    /// The interpolated depth of window depth `z` (in `[0, 1]`, smaller
-    /// nearer): `((1 - z) * 65534 + 1.5) * DEPTH_SCALE`, stored units
+    /// The interpolated depth of a vertex's window depth `z` in units of
+    /// 2^-30 (see [`ScreenVertex::z`](crate::raster::ScreenVertex::z), at
+    /// most 2^30): `((1 - z) * 65534 + 1.5) * DEPTH_SCALE`, stored units
     /// from 1 (far) to 65535.5 (near) scaled (see [`Interp::DEPTH_SCALE`]).
-    fn depth(z: f32) -> Self;
+    fn depth(z: u32) -> Self;
     /// To `f32`.
     fn to_f32(self) -> f32;
     /// `self + d`.
@@ -304,9 +305,12 @@ impl Interp for f32 {
         false
     }
     #[inline(always)]
-    fn depth(z: f32) -> Self {
-        // As it is, like `from_f32_truncated`.
-        (1.0 - z) * crate::raster::DEPTH_RANGE + 1.5
+    fn depth(z: u32) -> Self {
+        // `1 - z` in units of 2^-30 is exact as an integer; its conversion
+        // rounds as `1.0 - z` in `f32` does (the same value scaled by 2^30),
+        // and so does the product by `DEPTH_RANGE` scaled by 2^-30 (a
+        // power of two apart).
+        ((crate::raster::DEPTH_ONE - z) as f32) * (crate::raster::DEPTH_RANGE / (1u32 << 30) as f32) + 1.5
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -510,12 +514,11 @@ impl Interp for Fixed {
         (self.to_bits() as u32).wrapping_add(LIMIT - 1) > 2 * LIMIT - 2
     }
     #[inline(always)]
-    fn depth(z: f32) -> Self {
-        // z * 2^30 (z within [0, 1]; rounding can leave it by an ulp), then
+    fn depth(z: u32) -> Self {
         // (1 - z) * 65534 + 1.5 halved, in units of 2^-16: the product is
-        // below 2^46 and the result below 2^31.
-        let z = Fixed::scaled_truncated(z, 30).clamp(0, 1 << 30);
-        Fixed::from_bits(halved_depth_bits(((1 << 30) - z) as u32))
+        // below 2^46 and the result below 2^31. (An integer already: no
+        // conversion per triangle.)
+        Fixed::from_bits(halved_depth_bits(crate::raster::DEPTH_ONE - z))
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -655,6 +658,40 @@ fn halved_depth_bits(x: u32) -> i32 {
 mod tests {
     use super::*;
     use crate::math::xorshift;
+
+    #[test]
+    fn window_depth_in_units_gives_the_f32_formula_and_the_fixed_depth() {
+        use crate::raster::{window_depth, DEPTH_ONE, DEPTH_RANGE};
+        // The ends, and rounding's overshoots, are clamped; NaN is 0.
+        assert_eq!(window_depth(0.0), 0);
+        assert_eq!(window_depth(-0.0), 0);
+        assert_eq!(window_depth(-f32::EPSILON), 0);
+        assert_eq!(window_depth(1.0), DEPTH_ONE);
+        assert_eq!(window_depth(1.0 + f32::EPSILON), DEPTH_ONE);
+        assert_eq!(window_depth(f32::NAN), 0);
+        let mut next = xorshift(0x5EED_D397);
+        let mut checked = 0;
+        for _ in 0..200_000 {
+            // Uniform bits in [0, 1]: every exponent, down to subnormals.
+            let z = f32::from_bits(next() % (1.0f32.to_bits() + 1));
+            let units = window_depth(z);
+            assert_eq!(units as f64, (z as f64 * (1u64 << 30) as f64).floor(), "{z}");
+            // Fixed point: what it took from the `f32` depth before.
+            let old = Fixed::scaled_truncated(z, 30).clamp(0, 1 << 30);
+            assert_eq!(<Fixed as Interp>::depth(units), Fixed::from_bits(halved_depth_bits(((1 << 30) - old) as u32)));
+            // `f32`: the same bits as the formula on `z` itself, wherever
+            // `z * 2^30` is whole (from 2^-7 up); below, within an ulp.
+            let formula = (1.0 - z) * DEPTH_RANGE + 1.5;
+            let from_units = <f32 as Interp>::depth(units);
+            if z >= 1.0 / 128.0 {
+                assert_eq!(from_units.to_bits(), formula.to_bits(), "{z}");
+                checked += 1;
+            } else {
+                assert!((from_units - formula).abs() <= formula * f32::EPSILON, "{z}: {from_units} against {formula}");
+            }
+        }
+        assert!(checked > 1000, "{checked} values from 2^-7 up");
+    }
 
     #[test]
     fn halved_depth_needs_no_product() {

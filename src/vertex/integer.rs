@@ -290,15 +290,10 @@ impl<'a> IntegerProjection<'a> {
                     let r = reciprocal_q61((w as u32) << n);
                     if let (Some(sx), Some(sy)) = (self.snap(0, x, r, n), self.snap(1, y, r, n)) {
                         // 1 / w = r 2^(n - 61 + s), and z / w = (z r) 2^(n - 61),
-                        // in [0, 1] but for the reciprocal's error.
-                        let depth = (shr_wide(mul_wide(z, r), 31 - n) as u32).min(1 << 30);
-                        *out = ScreenVertex {
-                            x: sx,
-                            y: sy,
-                            z: f32_from_parts(depth, -30),
-                            q: f32_from_parts(r as u32, n as i32 - 61 + self.scale[3]),
-                            attrs,
-                        };
+                        // in [0, 1] but for the reciprocal's error: the
+                        // window depth in units of 2^-30, all 30 bits kept.
+                        let depth = (shr_wide(mul_wide(z, r), 31 - n) as u32).min(crate::raster::DEPTH_ONE);
+                        *out = ScreenVertex { x: sx, y: sy, z: depth, q: f32_from_parts(r as u32, n as i32 - 61 + self.scale[3]), attrs };
                         return;
                     }
                 }
@@ -397,8 +392,10 @@ mod tests {
             };
             compare(sx, err_x, v.x);
             compare(sy, err_y, v.y);
-            let depth_err = (ez + ew) / w + (z / w) * rel + 2f64.powi(-23);
-            assert!((v.z as f64 - z / w).abs() <= depth_err, "vertex {i}: depth {} against {}", v.z, z / w);
+            // (The depth is kept in units of 2^-30, truncated.)
+            let depth_err = (ez + ew) / w + (z / w) * rel + 2f64.powi(-30);
+            let depth = v.z as f64 / (1u64 << 30) as f64;
+            assert!((depth - z / w).abs() <= depth_err, "vertex {i}: depth {depth} against {}", z / w);
             assert!((v.q as f64 * w - 1.0).abs() <= rel + 2f64.powi(-22), "vertex {i}: 1/w {} against {}", v.q, 1.0 / w);
         }
         equal
