@@ -549,7 +549,13 @@ where
             let lighting = lit_in_model_space
                 .then(|| IntegerLighting::new(stage.lights, mesh.normals(), mesh.unit_normals(), E::lit_scale::<C>()))
                 .flatten();
-            return self.queue_mesh::<E, P, D, _, CULL_FIRST>(mesh, material, &stage, &IntegerVertices { projection, lighting }, base);
+            return self.queue_mesh::<E, P, D, _, CULL_FIRST>(
+                mesh,
+                material,
+                &stage,
+                &IntegerVertices { projection, lighting, perspective: P::CORRECT },
+                base,
+            );
         }
         self.queue_mesh::<E, P, D, _, CULL_FIRST>(mesh, material, &stage, &FloatVertices, base)
     }

@@ -283,6 +283,9 @@ pub struct IntegerVertices<'a> {
     pub projection: Option<IntegerProjection<'a>>,
     /// Its lights, if integers cover them.
     pub lighting: Option<IntegerLighting<'a>>,
+    /// Whether its material corrects for perspective: only then is `q`
+    /// (`1 / w`) converted and stored; otherwise it is 1.
+    pub perspective: bool,
 }
 
 impl VertexArithmetic for IntegerVertices<'_> {
@@ -303,7 +306,7 @@ impl VertexArithmetic for IntegerVertices<'_> {
     ) {
         let attrs = self.varyings::<E, C, V>(stage, mesh, i);
         match &self.projection {
-            Some(p) => p.project_into(i, attrs, out),
+            Some(p) => p.project_into(i, attrs, self.perspective, out),
             None => {
                 let v = ClipVertex { pos: stage.clip_position(mesh.position(i)), attrs, src: 0 };
                 *out = project_out_of_line(&v, stage.width, stage.height, stage.subpixel_bits);
