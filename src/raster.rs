@@ -56,7 +56,13 @@ pub const DEPTH_ONE: u32 = 1 << 30;
 /// bits lost are finer than any depth format stores.
 #[inline]
 pub fn window_depth(z: f32) -> u32 {
-    crate::math::Fixed::scaled_truncated(z, 30).clamp(0, DEPTH_ONE as i32) as u32
+    if crate::math::HARD_FLOAT {
+        // The conversion to `u32` saturates (NaN and negatives to 0): one
+        // instruction with an FPU, and one compare for the upper end.
+        ((z * (1u32 << 30) as f32) as u32).min(DEPTH_ONE)
+    } else {
+        crate::math::Fixed::scaled_truncated(z, 30).clamp(0, DEPTH_ONE as i32) as u32
+    }
 }
 
 /// A vertex in window space, ready for setup.

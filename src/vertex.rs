@@ -132,7 +132,7 @@ impl<E: Effect> VertexStage<'_, E> {
         let p = mesh.position(i);
         let clip = self.clip_position(p);
         let attrs = self.varyings_at::<C, V>(mesh, i, p, self.lights);
-        project_into(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits, out)
+        project_into(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits, E::VARYINGS, out)
     }
 }
 
@@ -183,14 +183,23 @@ fn all_finite(values: &[f32]) -> bool {
 #[inline(always)]
 pub fn project<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32) -> ScreenVertex<V> {
     let mut out = ScreenVertex::ZERO;
-    project_into(v, width, height, subpixel_bits, &mut out);
+    project_into(v, width, height, subpixel_bits, V, &mut out);
     out
 }
 
 /// [`project`] into `out`, where the vertex is stored: built in place,
 /// not built and then copied (the vertex loop's common path).
 #[inline(always)]
-pub(crate) fn project_into<const V: usize>(v: &ClipVertex<V>, width: f32, height: f32, subpixel_bits: u32, out: &mut ScreenVertex<V>) {
+///
+/// Only the first `varyings` attributes are stored (see [`store_projected`]).
+pub(crate) fn project_into<const V: usize>(
+    v: &ClipVertex<V>,
+    width: f32,
+    height: f32,
+    subpixel_bits: u32,
+    varyings: usize,
+    out: &mut ScreenVertex<V>,
+) {
     let c = v.pos;
     let mut flags = 0;
     // A non-finite varying (a NaN texture coordinate) would be drawn as
@@ -211,12 +220,30 @@ pub(crate) fn project_into<const V: usize>(v: &ClipVertex<V>, width: f32, height
         let q = 1.0 / c.w;
         let (x, y) = ((c.x * q + 1.0) * 0.5 * width, (1.0 - c.y * q) * 0.5 * height);
         if let (Some(x), Some(y)) = (snap(x, subpixel_bits), snap(y, subpixel_bits)) {
-            *out = ScreenVertex { x, y, z: crate::raster::window_depth(c.z * q), q, attrs: v.attrs };
+            store_projected(out, (x, y, crate::raster::window_depth(c.z * q), q), &v.attrs, varyings);
             return;
         }
         flags |= OUTSIDE_GUARD;
     }
     store_unprojected(out, flags)
+}
+
+/// Stores a projected vertex `(x, y, z, q)` with the first `varyings` of
+/// `attrs` into `out`. The others are left as they were: the draw call's
+/// material never reads them (its rasterizer takes `E::VARYINGS`), and a
+/// renderer sized for more varyings than a material uses then does not
+/// store them at every vertex (a flat draw call in a renderer of six
+/// varyings wrote six zeros a vertex).
+#[inline(always)]
+pub(crate) fn store_projected<const V: usize>(
+    out: &mut ScreenVertex<V>,
+    (x, y, z, q): (i32, i32, u32, f32),
+    attrs: &[f32; V],
+    varyings: usize,
+) {
+    (out.x, out.y, out.z, out.q) = (x, y, z, q);
+    let n = varyings.min(V);
+    out.attrs[..n].copy_from_slice(&attrs[..n]);
 }
 
 /// Stores a vertex without a window position, flagged why. Cold and out
@@ -306,7 +333,7 @@ impl VertexArithmetic for IntegerVertices<'_> {
     ) {
         let attrs = self.varyings::<E, C, V>(stage, mesh, i);
         match &self.projection {
-            Some(p) => p.project_into(i, attrs, self.perspective, out),
+            Some(p) => p.project_into(i, attrs, self.perspective, E::VARYINGS, out),
             None => {
                 let v = ClipVertex { pos: stage.clip_position(mesh.position(i)), attrs, src: 0 };
                 *out = project_out_of_line(&v, stage.width, stage.height, stage.subpixel_bits);

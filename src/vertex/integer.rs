@@ -267,7 +267,7 @@ impl<'a> IntegerProjection<'a> {
     #[inline(always)]
     pub fn project<const V: usize>(&self, i: usize, attrs: [f32; V]) -> ScreenVertex<V> {
         let mut out = ScreenVertex::ZERO;
-        self.project_into(i, attrs, true, &mut out);
+        self.project_into(i, attrs, true, V, &mut out);
         out
     }
 
@@ -277,7 +277,16 @@ impl<'a> IntegerProjection<'a> {
     ///
     /// Without `perspective` (a material that does not correct for it and
     /// so never reads `q`), `q` is stored as 1, not converted to `f32`.
-    pub(super) fn project_into<const V: usize>(&self, i: usize, attrs: [f32; V], perspective: bool, out: &mut ScreenVertex<V>) {
+    /// Only the first `varyings` attributes are stored (see
+    /// [`store_projected`](super::store_projected)).
+    pub(super) fn project_into<const V: usize>(
+        &self,
+        i: usize,
+        attrs: [f32; V],
+        perspective: bool,
+        varyings: usize,
+        out: &mut ScreenVertex<V>,
+    ) {
         let flags = match self.clip(i) {
             Some([x, y, z, w]) if all_finite(&attrs) => {
                 let mut flags = 0;
@@ -296,13 +305,8 @@ impl<'a> IntegerProjection<'a> {
                         // in [0, 1] but for the reciprocal's error: the
                         // window depth in units of 2^-30, all 30 bits kept.
                         let depth = (shr_wide(mul_wide(z, r), 31 - n) as u32).min(crate::raster::DEPTH_ONE);
-                        *out = ScreenVertex {
-                            x: sx,
-                            y: sy,
-                            z: depth,
-                            q: if perspective { f32_from_parts(r as u32, n as i32 - 61 + self.scale[3]) } else { 1.0 },
-                            attrs,
-                        };
+                        let q = if perspective { f32_from_parts(r as u32, n as i32 - 61 + self.scale[3]) } else { 1.0 };
+                        super::store_projected(out, (sx, sy, depth, q), &attrs, varyings);
                         return;
                     }
                 }
