@@ -146,10 +146,11 @@ fn render_meshes<E: soft3d::effect::Effect>(
 }
 
 /// `torus.babylon` from `../shared/assets` from its camera, drawn as the
-/// benchmark's `torus.babylon` (`f32` positions, `Gouraud`) and as its
+/// benchmark's `torus.babylon` (`f32` positions, `Gouraud`), as its
+/// `torus.babylon-mono` (`f32` positions, `MonoGouraud`) and as its
 /// `torus.babylon-i16-mono` (`i16` positions and normals, `MonoGouraud`),
 /// or `None` if the file is absent.
-fn torus_exact_and_cheapest() -> Option<(Image<Rgb565>, Image<Rgb565>)> {
+fn torus_exact_mono_and_cheapest() -> Option<[Image<Rgb565>; 3]> {
     use soft3d::scenes::{WHITE, WHITE_MONO};
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/assets/torus.babylon");
     let scene = match soft3d::host::scene::HostScene::load(path) {
@@ -163,7 +164,11 @@ fn torus_exact_and_cheapest() -> Option<(Image<Rgb565>, Image<Rgb565>)> {
     let exact: Vec<_> = scene.meshes.iter().map(|m| (m.mesh(), m.model)).collect();
     let quantized: Vec<_> = scene.meshes.iter().map(|m| (m.quantized().unwrap(), m.model)).collect();
     let cheapest: Vec<_> = quantized.iter().map(|(q, model)| (q.mesh(), *model)).collect();
-    Some((render_meshes(&camera, &exact, &WHITE), render_meshes(&camera, &cheapest, &WHITE_MONO)))
+    Some([
+        render_meshes(&camera, &exact, &WHITE),
+        render_meshes(&camera, &exact, &WHITE_MONO),
+        render_meshes(&camera, &cheapest, &WHITE_MONO),
+    ])
 }
 
 /// Pixels drawn in both frames, of those the ones equal, pixels drawn in
@@ -192,8 +197,26 @@ fn differences(a: &Image<Rgb565>, b: &Image<Rgb565>) -> (usize, usize, usize, [u
 /// channel.
 #[test]
 fn the_cheapest_torus_is_within_a_level_of_the_exact_one() {
-    let Some((exact, cheapest)) = torus_exact_and_cheapest() else { return };
+    let Some([exact, _, cheapest]) = torus_exact_mono_and_cheapest() else { return };
     let (both, equal, coverage, worst) = differences(&exact, &cheapest);
+    println!("drawn in both {both}, equal {equal}, drawn in one only {coverage}, worst per channel {worst:?}");
+    assert!(both > 1000, "the torus covers {both} pixels");
+    assert_eq!(coverage, 0, "pixels drawn in one frame only");
+    assert!(worst.iter().all(|&d| d <= 1), "a channel {worst:?} levels off");
+    assert!(equal * 10 >= both * 9, "{equal} of {both} pixels equal");
+}
+
+/// One interpolated light level (`MonoGouraud`, the benchmark's
+/// `torus.babylon-mono`, the row that meets the M0+ target) against three
+/// channels (`Gouraud`), both from the file's `f32` positions: under the
+/// benchmark's white light on a white material the two compute the same
+/// N·L formula, and the README states the frames agree within a level.
+/// Measured: the same 1,321 pixels, 1,200 of them equal, none more than
+/// one level off in any channel.
+#[test]
+fn the_one_level_torus_is_within_a_level_of_the_three_channel_one() {
+    let Some([exact, mono, _]) = torus_exact_mono_and_cheapest() else { return };
+    let (both, equal, coverage, worst) = differences(&exact, &mono);
     println!("drawn in both {both}, equal {equal}, drawn in one only {coverage}, worst per channel {worst:?}");
     assert!(both > 1000, "the torus covers {both} pixels");
     assert_eq!(coverage, 0, "pixels drawn in one frame only");

@@ -105,6 +105,22 @@ pub(super) fn f32_from_parts(v: u32, e: i32) -> f32 {
     }
 }
 
+/// `v` truncated to its 24 leading bits, the precision of an `f32` (what
+/// [`f32_from_parts`] keeps), as an integer. The integer window depth is
+/// kept so: its last bits carry the integer transform's and the
+/// reciprocal's rounding, and with all 30 of them `Depth32` showed the
+/// wrong plane of `zfight` (docs/accuracy.md) at 62 pixels, against none
+/// when cut to 24 bits like the `f32` vertex stage's depth.
+#[inline(always)]
+pub(super) fn f32_precision(v: u32) -> u32 {
+    let n = crate::math::leading_zeros(v);
+    if n >= 8 {
+        v
+    } else {
+        v & (u32::MAX << (8 - n))
+    }
+}
+
 /// `round(v 2^k)` of a finite `f32` from its bits, clamped to `±max`
 /// (at most `2^30`), or `None` if `v` is not finite.
 #[inline(always)]
@@ -303,8 +319,8 @@ impl<'a> IntegerProjection<'a> {
                     if let (Some(sx), Some(sy)) = (self.snap(0, x, r, n), self.snap(1, y, r, n)) {
                         // 1 / w = r 2^(n - 61 + s), and z / w = (z r) 2^(n - 61),
                         // in [0, 1] but for the reciprocal's error: the
-                        // window depth in units of 2^-30, all 30 bits kept.
-                        let depth = (shr_wide(mul_wide(z, r), 31 - n) as u32).min(crate::raster::DEPTH_ONE);
+                        // window depth in units of 2^-30, to `f32` precision.
+                        let depth = f32_precision((shr_wide(mul_wide(z, r), 31 - n) as u32).min(crate::raster::DEPTH_ONE));
                         let q = if perspective { f32_from_parts(r as u32, n as i32 - 61 + self.scale[3]) } else { 1.0 };
                         super::store_projected(out, (sx, sy, depth, q), &attrs, varyings);
                         return;
@@ -405,8 +421,8 @@ mod tests {
             };
             compare(sx, err_x, v.x);
             compare(sy, err_y, v.y);
-            // (The depth is kept in units of 2^-30, truncated.)
-            let depth_err = (ez + ew) / w + (z / w) * rel + 2f64.powi(-30);
+            // (The depth is kept in units of 2^-30, truncated to 24 bits.)
+            let depth_err = (ez + ew) / w + (z / w) * rel + 2f64.powi(-23);
             let depth = v.z as f64 / (1u64 << 30) as f64;
             assert!((depth - z / w).abs() <= depth_err, "vertex {i}: depth {depth} against {}", z / w);
             assert!((v.q as f64 * w - 1.0).abs() <= rel + 2f64.powi(-22), "vertex {i}: 1/w {} against {}", v.q, 1.0 / w);
@@ -482,6 +498,19 @@ mod tests {
         assert_eq!(scaled_rounded(f32::NAN, 0, INPUT_MAX), None);
         for (v, e, want) in [(1u32, 0, 1.0f32), (3, -1, 1.5), (1 << 30, -30, 1.0), (0, 5, 0.0), (1, -200, 0.0), (1, 200, f32::MAX)] {
             assert_eq!(f32_from_parts(v, e), want, "{v} * 2^{e}");
+        }
+    }
+
+    #[test]
+    fn depth_to_f32_precision_is_the_round_trip_through_f32() {
+        // What the depth was when stored as `f32_from_parts(depth, -30)`
+        // and converted back: the same integer, with no `f32` stored.
+        let mut next = xorshift(0x0DE9_7A30);
+        let edges = [0, 1, (1 << 24) - 1, 1 << 24, (1 << 24) + 1, (1 << 30) - 1, 1 << 30];
+        for v in edges.into_iter().chain((0..100_000).map(|_| next() >> (2 + next() % 24))) {
+            let v = v.min(1 << 30);
+            let round_trip = (f32_from_parts(v, -30) as f64 * (1u64 << 30) as f64) as u32;
+            assert_eq!(f32_precision(v), round_trip, "{v}");
         }
     }
 }
