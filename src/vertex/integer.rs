@@ -113,6 +113,11 @@ pub(super) fn f32_from_parts(v: u32, e: i32) -> f32 {
 /// when cut to 24 bits like the `f32` vertex stage's depth.
 #[inline(always)]
 pub(super) fn f32_precision(v: u32) -> u32 {
+    // Most depths are from 1/2 up (2^29 units): their low 6 bits go, with
+    // no count of leading zeros (a table lookup on ARMv6-M).
+    if v >= 1 << 29 {
+        return v & !0x3F;
+    }
     let n = crate::math::leading_zeros(v);
     if n >= 8 {
         v
