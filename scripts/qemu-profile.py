@@ -60,16 +60,18 @@ with tempfile.TemporaryDirectory() as d:
             m = re.match(r"^Trace \d+: \S+ \[[0-9a-f]+/([0-9a-f]+)/", line)
             if m:
                 counts[int(m.group(1), 16)] += 1
-    if by_count:
-        # Executions of each instruction of the function (summed over the
-        # translated blocks that hold it: a jump into the middle of a block
-        # starts another), then per execution count: how many instructions
-        # ran that often, and their total.
+    if by_count or annotate:
+        # Executions of each instruction of the function, summed over the
+        # translated blocks that hold it (a jump into the middle of a block
+        # starts another).
         per_pc = collections.Counter()
         for pc, c in counts.items():
             if arg in name.get(pc, ""):
                 for a in addrs.get(pc, []):
                     per_pc[a] += c
+    if by_count:
+        # Per execution count: how many instructions ran that often, and
+        # their total.
         groups = collections.Counter(per_pc.values())
         total = sum(c * n for c, n in groups.items())
         print(f"{total:>12,}  total")
@@ -79,11 +81,6 @@ with tempfile.TemporaryDirectory() as d:
                 print(f"{c:>10,} {n:>6} {c * n:>12,}  {100 * c * n / total:5.1f}%")
         sys.exit(0)
     if annotate:
-        per_pc = collections.Counter()
-        for pc, c in counts.items():
-            if arg in name.get(pc, ""):
-                for a in addrs.get(pc, []):
-                    per_pc[a] += c
         lo, hi = min(per_pc), max(per_pc) + 4
         dis = subprocess.run(["llvm-objdump", "-d", "-l", "--no-show-raw-insn", f"--start-address={lo:#x}",
                               f"--stop-address={hi:#x}", elf], capture_output=True, text=True).stdout
