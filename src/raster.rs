@@ -1153,10 +1153,9 @@ fn span<C, S, E, P, D, Z, const CLAMP: bool>(
             let pixels = color[start..start + seg].iter_mut().zip(depth[start..start + seg].iter_mut());
             for (px, zb) in pixels {
                 no_unroll();
-                let zq = Z::store(z);
-                if !D::TEST || zq > *zb {
+                if !D::TEST || Z::nearer(z, *zb) {
                     if D::WRITE {
-                        *zb = zq;
+                        *zb = Z::store(z);
                     }
                     *px = effect.shade(uniforms, face, &cur, *px);
                 }
@@ -1177,10 +1176,9 @@ fn span<C, S, E, P, D, Z, const CLAMP: bool>(
     let (z_dx, v_dx) = if S::WRAPS && !cfg!(soft3d_armv6m) { opaque((z_dx, *v_dx)) } else { (z_dx, *v_dx) };
     for (px, zb) in color.iter_mut().zip(depth.iter_mut()) {
         no_unroll();
-        let zq = Z::store(z);
-        if !D::TEST || zq > *zb {
+        if !D::TEST || Z::nearer(z, *zb) {
             if D::WRITE {
-                *zb = zq;
+                *zb = Z::store(z);
             }
             *px = if P::CORRECT {
                 effect.shade(uniforms, face, &divide::<S, E, CLAMP>(&vals, q, bounds), *px)

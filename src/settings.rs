@@ -36,6 +36,12 @@ pub trait DepthFormat: 'static {
     const NAME: &'static str;
     /// The stored form of an interpolated depth.
     fn store<I: Interp>(depth: I) -> Self::Value;
+    /// Whether an interpolated depth is nearer than a stored one:
+    /// `store(depth) > stored`.
+    #[inline(always)]
+    fn nearer<I: Interp>(depth: I, stored: Self::Value) -> bool {
+        Self::store(depth) > stored
+    }
 }
 
 /// 16-bit depth (2 bytes per pixel): the integer part of the depth value.
@@ -50,6 +56,10 @@ impl DepthFormat for Depth16 {
     #[inline(always)]
     fn store<I: Interp>(depth: I) -> u16 {
         depth.depth16()
+    }
+    #[inline(always)]
+    fn nearer<I: Interp>(depth: I, stored: u16) -> bool {
+        depth.depth16_wide() > stored as u32
     }
 }
 
@@ -107,3 +117,34 @@ pub type FixedPoint = Precision<Fixed, 6>;
 /// M33F), where the study measured it both faster and more accurate than
 /// fixed point.
 pub type FloatingPoint = Precision<f32, 6>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `Depth16::nearer` compares without narrowing: it must agree with
+    /// the stored value's comparison for every depth the contract allows
+    /// (`[0, 65536)` stored units) and every stored value.
+    fn nearer_is_the_stored_comparison<S: Interp>(depth: impl Fn(u32) -> S) {
+        // Each stored unit at its start, middle and last representable
+        // value below the next, against stored values around it.
+        for unit in 0..65536u32 {
+            for part in [0, 1, 2] {
+                let d = depth(unit * 4 + part);
+                for stored in [0, unit.saturating_sub(1), unit, unit + 1, 65535].map(|s| s.min(65535) as u16) {
+                    assert_eq!(Depth16::nearer(d, stored), Depth16::store(d) > stored, "unit {unit}.{part}, stored {stored}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_16_bit_depth_test_compares_what_it_stores() {
+        // Fixed holds depth halved with 16 fractional bits: a stored unit
+        // is 2^15, the quarter steps 2^13; its largest value sits just
+        // below the contract's end.
+        nearer_is_the_stored_comparison(|q| Fixed::from_bits((q << 13) as i32));
+        assert!(Depth16::nearer(Fixed::from_bits(i32::MAX), 65534));
+        nearer_is_the_stored_comparison(|q| q as f32 / 4.0);
+    }
+}

@@ -111,6 +111,15 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// A depth value (see [`Interp::DEPTH_SCALE`]) as stored depth, under
     /// the same contract as [`Interp::channel`] for `[0, 65536)`.
     fn depth16(self) -> u16;
+    /// [`Interp::depth16`] as `u32`, under the same contract, for the
+    /// depth test: compared in 32 bits, fixed point needs no mask to 16
+    /// bits and `f32` no zero-extension after its saturation (one
+    /// instruction a pixel less each on the M4F; `wall-gouraud` in fixed
+    /// point on the M0+ three less).
+    #[inline(always)]
+    fn depth16_wide(self) -> u32 {
+        self.depth16() as u32
+    }
     /// A depth value as stored depth with 16 fractional bits (`f32`:
     /// saturating).
     fn depth32(self) -> u32;
@@ -609,6 +618,12 @@ impl Interp for Fixed {
     #[inline(always)]
     fn depth16(self) -> u16 {
         (self.to_bits() >> (Fixed::FRAC_BITS - 1)) as u16
+    }
+    #[inline(always)]
+    fn depth16_wide(self) -> u32 {
+        // Within the contract the top bit is clear: a logical shift is
+        // the value.
+        self.to_bits() as u32 >> (Fixed::FRAC_BITS - 1)
     }
     #[inline(always)]
     fn depth32(self) -> u32 {
