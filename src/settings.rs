@@ -123,11 +123,11 @@ mod tests {
     use super::*;
 
     /// `Depth16::nearer` compares without narrowing: it must agree with
-    /// the stored value's comparison for every depth the contract allows
-    /// (`[0, 65536)` stored units) and every stored value.
+    /// the stored value's comparison over the depths the contract allows
+    /// (`[0, 65536)` stored units).
     fn nearer_is_the_stored_comparison<S: Interp>(depth: impl Fn(u32) -> S) {
-        // Each stored unit at its start, middle and last representable
-        // value below the next, against stored values around it.
+        // Each stored unit at 0, 1/4 and 1/2 of a unit past it, against
+        // the stored values next to it and at both ends.
         for unit in 0..65536u32 {
             for part in [0, 1, 2] {
                 let d = depth(unit * 4 + part);
