@@ -55,11 +55,11 @@ impl DepthFormat for Depth16 {
     const NAME: &'static str = "16-bit";
     #[inline(always)]
     fn store<I: Interp>(depth: I) -> u16 {
-        depth.depth16()
+        depth.depth16() as u16
     }
     #[inline(always)]
     fn nearer<I: Interp>(depth: I, stored: u16) -> bool {
-        depth.depth16_wide() > stored as u32
+        depth.depth16() > stored as u32
     }
 }
 

@@ -108,18 +108,13 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// The value times 2^16 as an integer (saturating for `f32`): texture
     /// coordinates with 16 fractional bits.
     fn to_bits16(self) -> i32;
-    /// A depth value (see [`Interp::DEPTH_SCALE`]) as stored depth, under
-    /// the same contract as [`Interp::channel`] for `[0, 65536)`.
-    fn depth16(self) -> u16;
-    /// [`Interp::depth16`] as `u32`, under the same contract, for the
-    /// depth test: compared in 32 bits, fixed point needs no mask to 16
-    /// bits and `f32` no zero-extension after its saturation (one
-    /// instruction a pixel less each on the M4F; `wall-gouraud` in fixed
-    /// point on the M0+ three less).
-    #[inline(always)]
-    fn depth16_wide(self) -> u32 {
-        self.depth16() as u32
-    }
+    /// A depth value (see [`Interp::DEPTH_SCALE`]) as 16-bit stored depth,
+    /// under the same contract as [`Interp::channel`] for `[0, 65536)`.
+    /// In a `u32`, so that the depth test compares in 32 bits: fixed point
+    /// then needs no mask to 16 bits and `f32` no zero-extension after
+    /// its saturation (one instruction a pixel less each on the M4F;
+    /// `wall-gouraud` in fixed point on the M0+ three less).
+    fn depth16(self) -> u32;
     /// A depth value as stored depth with 16 fractional bits (`f32`:
     /// saturating).
     fn depth32(self) -> u32;
@@ -396,16 +391,16 @@ impl Interp for f32 {
         (self * 65536.0) as i32
     }
     #[inline(always)]
-    fn depth16(self) -> u16 {
+    fn depth16(self) -> u32 {
         // With an FPU through i32 (one instruction, saturating, NaN to 0),
         // then clamped: with DSP instructions (Cortex-M4F) one `usat`,
         // where `min` on a u32 needed a compare and the constant's
         // register. Without, through u32: in software the conversion to
         // i32 tests more bounds (wall-flat f32 on the M0+ 15% slower).
         if super::HARD_FLOAT {
-            (self as i32).clamp(0, 65535) as u16
+            (self as i32).clamp(0, 65535) as u32
         } else {
-            (self as u32).min(65535) as u16
+            (self as u32).min(65535)
         }
     }
     #[inline(always)]
@@ -616,11 +611,7 @@ impl Interp for Fixed {
         self.to_bits()
     }
     #[inline(always)]
-    fn depth16(self) -> u16 {
-        (self.to_bits() >> (Fixed::FRAC_BITS - 1)) as u16
-    }
-    #[inline(always)]
-    fn depth16_wide(self) -> u32 {
+    fn depth16(self) -> u32 {
         // Within the contract the top bit is clear: a logical shift is
         // the value.
         self.to_bits() as u32 >> (Fixed::FRAC_BITS - 1)
@@ -853,7 +844,7 @@ mod tests {
             if v.is_nan() || v < 256.0 {
                 assert_eq!(Interp::channel(v), v as u8, "{v:e}");
             }
-            assert_eq!(Interp::depth16(v), v as u16, "{v:e}");
+            assert_eq!(Interp::depth16(v), v as u16 as u32, "{v:e}");
         }
     }
 
