@@ -960,19 +960,95 @@ fn mark_unused_vertices<const V: usize>(test: BackFaceTest, mesh: &Mesh<'_>, slo
 }
 
 /// Restores the background color and cleared depth in the columns a strip
-/// dirtied.
+/// dirtied (the whole strip as one run where it dirtied every column).
 fn clean_columns<C: Copy, Z: DepthFormat>(strip: StripTarget<'_, C, Z::Value>, background: C) {
     let (x0, x1) = strip.dirty;
     if x0 >= x1 {
         return;
     }
     if x1 - x0 == strip.width {
-        strip.color.fill(background);
-        strip.depth.fill(Z::CLEAR);
+        fill_colors(strip.color, background);
+        fill_depths(strip.depth, Z::CLEAR);
         return;
     }
     for (c, z) in strip.color.chunks_exact_mut(strip.width).zip(strip.depth.chunks_exact_mut(strip.width)) {
-        c[x0..x1].fill(background);
-        z[x0..x1].fill(Z::CLEAR);
+        fill_colors(&mut c[x0..x1], background);
+        fill_depths(&mut z[x0..x1], Z::CLEAR);
+    }
+}
+
+/// Runs shorter than this are filled one value at a time: the setup of
+/// the block stores costs more than they save there (at 64, strips of
+/// `torus.babylon` in `f32` on the M4F took 0.4% more than at 32).
+const LONG_RUN: usize = 32;
+
+/// Fills a run of colors. A color type need not be plain bytes, so the
+/// stores stay one pixel each, but a long run is written in blocks of
+/// 16: one loop step per block, where `fill` took 1.75 instructions a
+/// pixel on the M4F (1.06 so).
+#[inline(always)]
+fn fill_colors<C: Copy>(run: &mut [C], value: C) {
+    if run.len() < LONG_RUN {
+        run.fill(value);
+        return;
+    }
+    let mut blocks = run.chunks_exact_mut(16);
+    for block in &mut blocks {
+        block.copy_from_slice(&[value; 16]);
+    }
+    blocks.into_remainder().fill(value);
+}
+
+/// Fills a run of depths, a long run in word-aligned blocks of 32 bytes,
+/// which the M4F copies by load- and store-multiple (`memclr`, which
+/// `fill` called, took 1.5 instructions a 16-bit depth there).
+#[inline(always)]
+fn fill_depths<T: bytemuck::Pod>(run: &mut [T], value: T) {
+    let size = core::mem::size_of::<T>();
+    if run.len() < LONG_RUN || 32 % size != 0 {
+        run.fill(value);
+        return;
+    }
+    let mut block = [0u32; 8];
+    for bytes in bytemuck::bytes_of_mut(&mut block).chunks_exact_mut(size) {
+        bytes.copy_from_slice(bytemuck::bytes_of(&value));
+    }
+    // Opaque: a zero block would be turned back into a call to `memclr`.
+    let block = core::hint::black_box(block);
+    let (head, blocks, tail) = bytemuck::pod_align_to_mut::<T, [u32; 8]>(run);
+    head.fill(value);
+    blocks.fill(block);
+    tail.fill(value);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every run of a buffer, at every start and length around the block
+    /// sizes, is filled exactly: nothing outside it changes.
+    fn fills_exactly<T: Copy + PartialEq + core::fmt::Debug>(old: T, new: T, fill: impl Fn(&mut [T], T)) {
+        let mut buf = [old; 200];
+        for start in 0..8 {
+            for len in (0..LONG_RUN + 40).chain([150, 191]) {
+                buf.fill(old);
+                fill(&mut buf[start..start + len], new);
+                for (i, v) in buf.iter().enumerate() {
+                    let inside = (start..start + len).contains(&i);
+                    assert_eq!(*v, if inside { new } else { old }, "start {start}, length {len}, index {i}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn runs_of_depths_and_colors_are_filled_exactly() {
+        fills_exactly(0xabcdu16, 0, fill_depths);
+        fills_exactly(0u16, 0x1234, fill_depths);
+        fills_exactly(7u32, 0, fill_depths);
+        fills_exactly(-1.5f32, 0.25, fill_depths);
+        fills_exactly(0u8, 9, fill_depths);
+        fills_exactly(Rgb888::new(1, 2, 3), Rgb888::new(200, 100, 50), fill_colors);
+        fills_exactly(embedded_graphics::pixelcolor::Rgb565::new(1, 2, 3), embedded_graphics::pixelcolor::Rgb565::BLACK, fill_colors);
     }
 }

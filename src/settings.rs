@@ -28,8 +28,9 @@ pub type DepthValue<S> = <<S as Settings>::Depth as DepthFormat>::Value;
 /// before the depth test cannot order them, at the price of its bytes per
 /// pixel in the strip's depth buffer.
 pub trait DepthFormat: 'static {
-    /// One pixel's stored depth. Larger is nearer.
-    type Value: Copy + PartialOrd + core::fmt::Debug;
+    /// One pixel's stored depth. Larger is nearer. Plain bytes, so that
+    /// a strip's depths are cleared by words.
+    type Value: bytemuck::Pod + PartialOrd + core::fmt::Debug;
     /// The cleared value: farther than anything drawable.
     const CLEAR: Self::Value;
     /// A short name for reports.

@@ -65,6 +65,35 @@ fn strips_render_exactly_the_full_frame() {
 }
 
 #[test]
+fn a_renderer_drawing_frame_after_frame_draws_what_a_fresh_one_draws() {
+    // Each strip restores only the columns it dirtied, by runs of every
+    // length and alignment: a wrong clear would leave the last frame's
+    // pixels or depths behind.
+    fn check<S: Settings>(w: usize, strip: usize) {
+        let mut r: HostRenderer<Rgb565, DEMO_VARYINGS, S> =
+            HostRenderer::new(w, 120, strip, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).unwrap();
+        for (k, t) in [0.0, 0.9, 1.7, 2.6, 0.3].into_iter().enumerate() {
+            let background = if k / 2 == 1 { Rgb565::new(2, 4, 6) } else { Rgb565::BLACK };
+            let mut frame = r.begin_frame(&demo_camera(), &demo_lights(), background);
+            draw_demo(&mut frame, t).unwrap();
+            let mut img = Image::new(w as u32, 120, Rgb565::BLACK);
+            let Ok(_) = frame.finish(&mut img);
+            let mut fresh: HostRenderer<Rgb565, DEMO_VARYINGS, S> =
+                HostRenderer::new(w, 120, strip, DEMO_VERTICES, DEMO_TRIANGLES, Rgb565::BLACK).unwrap();
+            let mut frame = fresh.begin_frame(&demo_camera(), &demo_lights(), background);
+            draw_demo(&mut frame, t).unwrap();
+            let mut want = Image::new(w as u32, 120, Rgb565::BLACK);
+            let Ok(_) = frame.finish(&mut want);
+            assert_eq!(img.pixels, want.pixels, "width {w}, strip {strip}, frame {k}");
+        }
+    }
+    for (w, strip) in [(160, 16), (157, 7), (33, 120), (8, 120), (40, 5)] {
+        check::<FixedPoint>(w, strip);
+        check::<FloatingPoint>(w, strip);
+    }
+}
+
+#[test]
 fn the_static_renderer_matches_the_host_renderer_and_draws_each_pixel_once() {
     // MockDisplay panics if any pixel is drawn twice (strips must not overlap).
     static CUBE: MeshData<24, 36> = MeshData::cube(1.0);
