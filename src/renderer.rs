@@ -420,6 +420,8 @@ pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
     lights: Lighting,
     background: C,
     stats: FrameStats,
+    /// `log2` of the strip height if it is a power of two (the usual).
+    strip_shift: Option<u32>,
 }
 
 /// Whether draw calls cull back faces in model space where meshes have
@@ -436,7 +438,6 @@ where
 {
     fn new(b: Buffers<'r, C, DepthValue<S>, V>, view_proj: Mat4, lights: &Lights, background: C) -> Self {
         Self {
-            b,
             n_vertices: 0,
             n_triangles: 0,
             draws: Vec::new(),
@@ -444,6 +445,8 @@ where
             lights: Lighting::new(lights, view_proj.eye().unwrap_or(Vec3::ZERO)),
             background,
             stats: FrameStats::default(),
+            strip_shift: b.strip.is_power_of_two().then(|| b.strip.trailing_zeros()),
+            b,
         }
     }
 
@@ -849,8 +852,10 @@ where
         // `first < end <= height`: a row of the frame. Strips of a power
         // of two rows (the usual) take a shift: without a divide
         // instruction (ARMv6-M) a division is a library call.
-        let strip = self.b.strip;
-        let s = if strip.is_power_of_two() { first as usize >> strip.trailing_zeros() } else { first as usize / strip };
+        let s = match self.strip_shift {
+            Some(shift) => first as usize >> shift,
+            None => first as usize / self.b.strip,
+        };
         let face = face();
         let rec = TriRecord { v: corners, next: s as u16, face: [face.r(), face.g(), face.b()] };
         let capacity = self.b.triangles.len();
