@@ -1041,7 +1041,7 @@ impl<S: Interp, const V: usize> Planes<S, V> {
 /// LLVM, which counts as a call, and its Arm unroller leaves loops with
 /// calls alone; it emits no instruction.
 #[inline(always)]
-fn no_unroll() {
+pub(crate) fn no_unroll() {
     #[cfg(target_arch = "arm")]
     core::hint::black_box(());
 }
