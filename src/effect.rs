@@ -182,7 +182,14 @@ pub(crate) fn lit_by(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb
 /// [`VertexInput::lit`] for effect `E` and display color `C`, in `f32`.
 #[inline(always)]
 pub(crate) fn lit_input<C: Color, E: Effect>(lights: &Lighting, position: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
-    let (l, s) = (lit_by(lights, position, normal, color), E::lit_scale::<C>());
+    scaled_lit::<C, E>(lit_by(lights, position, normal, color))
+}
+
+/// A lit color in [0, 255] per channel as [`VertexInput::lit`]: times the
+/// effect's scale, plus one half, in the channels it reads.
+#[inline(always)]
+pub(crate) fn scaled_lit<C: Color, E: Effect>(l: [f32; 3]) -> [f32; 3] {
+    let s = E::lit_scale::<C>();
     let channel = |k: usize| if E::LIT_CHANNELS[k] { l[k] * s[k] + 0.5 } else { 0.0 };
     [channel(0), channel(1), channel(2)]
 }
@@ -191,7 +198,7 @@ pub(crate) fn lit_input<C: Color, E: Effect>(lights: &Lighting, position: Vec3, 
 /// [0, 1] unless the lights keep it there (`clamp` false, the usual: a
 /// lit vertex then skips three clamps).
 #[inline]
-fn lit(light: Vec3, c: Rgb888, clamp: bool) -> [f32; 3] {
+pub(crate) fn lit(light: Vec3, c: Rgb888, clamp: bool) -> [f32; 3] {
     let ch = |l: f32, v: u8| if clamp { crate::scene::clamp01(l) } else { l } * v as f32;
     [ch(light.x, c.r()), ch(light.y, c.g()), ch(light.z, c.b())]
 }

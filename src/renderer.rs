@@ -590,12 +590,7 @@ where
         if let Some(test) = test {
             culled = mark_unused_vertices(test, mesh, &mut self.b.vertices[base..base + mesh.vertex_count()], &mut front);
         }
-        for (i, slot) in self.b.vertices[base..base + mesh.vertex_count()].iter_mut().enumerate() {
-            if test.is_some() && slot.x == vertex::UNPROJECTED {
-                continue;
-            }
-            vertices.vertex::<E, C, V>(stage, mesh, i, slot);
-        }
+        vertices.vertices::<E, C, V>(stage, mesh, &mut self.b.vertices[base..base + mesh.vertex_count()], test.is_some());
         self.n_vertices += mesh.vertex_count();
         let snapshot = self.stats;
         let (p, idx) = (|i: usize| mesh.position(i), mesh.indices());

@@ -160,10 +160,18 @@ impl Lighting {
             let l = (p.position - position).normalize_or_zero();
             light = light + p.color * clamp01(normal.dot(l));
         }
-        if let Some((l, color)) = self.sun {
-            light = light + color * clamp01(normal.dot(l));
+        self.add_sun(light, normal)
+    }
+
+    /// `light` plus the directional light's share at `normal`: the last
+    /// term of [`Lighting::diffuse`], which without a point light is all
+    /// of it after the ambient term.
+    #[inline(always)]
+    pub(crate) fn add_sun(&self, light: Vec3, normal: Vec3) -> Vec3 {
+        match self.sun {
+            Some((l, color)) => light + color * clamp01(normal.dot(l)),
+            None => light,
         }
-        light
     }
 }
 

@@ -7,7 +7,7 @@
 //! covers the lights).
 
 use crate::clip::ClipVertex;
-use crate::effect::{lit_input, vertex_varyings, Color, Effect, VertexInput};
+use crate::effect::{lit, lit_input, scaled_lit, vertex_varyings, Color, Effect, VertexInput};
 use crate::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::raster::{snap, ScreenVertex};
@@ -92,29 +92,41 @@ impl<E: Effect> VertexStage<'_, E> {
     /// reads it.
     #[inline(always)]
     fn varyings_at<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, p: Vec3, lights: &impl LitColor) -> [f32; V] {
+        let v = MeshVertex::read(mesh, i, p, self.color);
+        self.varyings_of::<C, V>(&v, (self.model_space, mesh.unit_normals()), lights, i)
+    }
+
+    /// Varyings of mesh vertex `i` as read into `v`. `(model_space,
+    /// unit_normals)`: whether it is lit in model space, and whether its
+    /// normal is a unit vector there (see [`VertexStage::model_space`]).
+    #[inline(always)]
+    fn varyings_of<C: Color, const V: usize>(
+        &self,
+        v: &MeshVertex,
+        (model_space, unit_normals): (bool, bool),
+        lights: &impl LitColor,
+        i: usize,
+    ) -> [f32; V] {
         if E::VARYINGS == 0 {
             return [0.0; V];
         }
         let (position, normal) = if !E::LIT_VERTICES {
             (Vec3::ZERO, Vec3::ZERO)
-        } else if self.model_space {
+        } else if model_space {
             // A mesh of unit normals (checked once, when it was built) is
             // used as it is; any other is normalized like the world path.
-            let n = mesh.normal(i);
-            let n = if mesh.unit_normals() { n } else { n.normalize_or_zero() };
-            (p, n)
+            (v.position, if unit_normals { v.normal } else { v.normal.normalize_or_zero() })
         } else {
-            let n = self.normal_matrix.transform(mesh.normal(i)).normalize_or_zero();
-            (self.model.transform_point3(p), n)
+            let n = self.normal_matrix.transform(v.normal).normalize_or_zero();
+            (self.model.transform_point3(v.position), n)
         };
-        let color = mesh.colors().map_or(self.color, |c| c[i]);
         let input = VertexInput {
             position,
             normal,
-            color,
-            uv: mesh.uvs().map_or(Vec2::new(0.0, 0.0), |u| u[i]),
+            color: v.color,
+            uv: v.uv,
             lit: if E::LIT_COLOR {
-                lights.lit::<C, E>(i, position, normal, if E::LIT_WHITE { Rgb888::WHITE } else { color })
+                lights.lit::<C, E>(i, position, normal, if E::LIT_WHITE { Rgb888::WHITE } else { v.color })
             } else {
                 [0.0; 3]
             },
@@ -129,10 +141,49 @@ impl<E: Effect> VertexStage<'_, E> {
     /// and copied (a copy of the whole vertex per vertex).
     #[inline(always)]
     pub fn vertex<C: Color, const V: usize>(&self, mesh: &Mesh<'_>, i: usize, out: &mut ScreenVertex<V>) {
-        let p = mesh.position(i);
-        let clip = self.clip_position(p);
-        let attrs = self.varyings_at::<C, V>(mesh, i, p, self.lights);
+        let v = MeshVertex::read(mesh, i, mesh.position(i), self.color);
+        self.vertex_of::<C, V>(&v, (self.model_space, mesh.unit_normals()), self.lights, i, out)
+    }
+
+    /// [`VertexStage::vertex`] from the vertex as read into `v` (see
+    /// [`VertexStage::varyings_of`]).
+    #[inline(always)]
+    fn vertex_of<C: Color, const V: usize>(
+        &self,
+        v: &MeshVertex,
+        space: (bool, bool),
+        lights: &impl LitColor,
+        i: usize,
+        out: &mut ScreenVertex<V>,
+    ) {
+        let clip = self.clip_position(v.position);
+        let attrs = self.varyings_of::<C, V>(v, space, lights, i);
         project_into(&ClipVertex { pos: clip, attrs, src: 0 }, self.width, self.height, self.subpixel_bits, E::VARYINGS, out)
+    }
+}
+
+/// One mesh vertex as the vertex stage reads it. Each field is read
+/// without a side effect (no panic), so what an effect does not use is
+/// not read at all once this is inlined.
+#[derive(Clone, Copy)]
+struct MeshVertex {
+    position: Vec3,
+    normal: Vec3,
+    color: Rgb888,
+    uv: Vec2,
+}
+
+impl MeshVertex {
+    /// Vertex `i` of `mesh` at position `position`, in `color` if the
+    /// mesh has no vertex colors.
+    #[inline(always)]
+    fn read(mesh: &Mesh<'_>, i: usize, position: Vec3, color: Rgb888) -> Self {
+        Self {
+            position,
+            normal: mesh.normal(i),
+            color: mesh.colors().and_then(|c| c.get(i).copied()).unwrap_or(color),
+            uv: mesh.uvs().and_then(|u| u.get(i).copied()).unwrap_or(Vec2::new(0.0, 0.0)),
+        }
     }
 }
 
@@ -152,6 +203,27 @@ impl LitColor for Lighting {
     #[inline(always)]
     fn lit<C: Color, E: Effect>(&self, _: usize, position: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
         lit_input::<C, E>(self, position, normal, color)
+    }
+}
+
+/// [`Lighting`] without a point light: the diffuse light is the ambient
+/// term plus the sun's share ([`Lighting::add_sun`]), the same arithmetic
+/// as [`Lighting::diffuse`] without its test for a point light at every
+/// vertex.
+struct SunLight<'a>(&'a Lighting);
+
+impl<'a> SunLight<'a> {
+    /// `lights` if they have no point light.
+    fn new(lights: &'a Lighting) -> Option<Self> {
+        lights.point.is_none().then_some(Self(lights))
+    }
+}
+
+impl LitColor for SunLight<'_> {
+    #[inline(always)]
+    fn lit<C: Color, E: Effect>(&self, _: usize, _: Vec3, normal: Vec3, color: Rgb888) -> [f32; 3] {
+        let light = self.0.add_sun(self.0.ambient, normal);
+        scaled_lit::<C, E>(lit(light, color, !self.0.in_unit_range()))
     }
 }
 
@@ -275,6 +347,24 @@ pub trait VertexArithmetic {
     /// Clip-space position of mesh vertex `i`, as the clipper sees it: the
     /// one its stored vertex was flagged by.
     fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4;
+    /// Stores every vertex of `mesh` in `slots` (one per vertex), except
+    /// those already flagged (model-space culling's marks) if
+    /// `skip_flagged`.
+    #[inline(always)]
+    fn vertices<E: Effect, C: Color, const V: usize>(
+        &self,
+        stage: &VertexStage<'_, E>,
+        mesh: &Mesh<'_>,
+        slots: &mut [ScreenVertex<V>],
+        skip_flagged: bool,
+    ) {
+        for (i, slot) in slots.iter_mut().enumerate() {
+            if skip_flagged && slot.x == UNPROJECTED {
+                continue;
+            }
+            self.vertex::<E, C, V>(stage, mesh, i, slot);
+        }
+    }
 }
 
 /// The vertex stage in `f32`.
@@ -298,6 +388,67 @@ impl VertexArithmetic for FloatVertices {
     #[inline(always)]
     fn clip_position<E: Effect>(&self, stage: &VertexStage<'_, E>, mesh: &Mesh<'_>, i: usize) -> Vec4 {
         stage.clip_position(mesh.position(i))
+    }
+    /// The usual draw call (`f32` positions and normals, no vertex colors,
+    /// lit in model space from unit normals, no point light) takes a loop
+    /// in which all of that is known: it reads positions and normals in
+    /// step with the slots and tests none of those per vertex. Any other
+    /// takes the general loop. The same arithmetic either way.
+    #[inline(always)]
+    fn vertices<E: Effect, C: Color, const V: usize>(
+        &self,
+        stage: &VertexStage<'_, E>,
+        mesh: &Mesh<'_>,
+        slots: &mut [ScreenVertex<V>],
+        skip_flagged: bool,
+    ) {
+        let lit_in_model_space = !E::LIT_VERTICES || (stage.model_space && mesh.unit_normals());
+        let arrays = mesh.positions().as_f32().zip(mesh.normals().as_f32());
+        let (Some((positions, normals)), None, true) = (arrays, mesh.colors(), lit_in_model_space) else {
+            for (i, slot) in slots.iter_mut().enumerate() {
+                if skip_flagged && slot.x == UNPROJECTED {
+                    continue;
+                }
+                stage.vertex::<C, V>(mesh, i, slot);
+            }
+            return;
+        };
+        // Without a point light, lit without its test at every vertex.
+        let arrays = MeshArrays { positions, normals, uvs: mesh.uvs() };
+        match SunLight::new(stage.lights) {
+            Some(sun) => arrays.vertices::<E, C, V>(stage, &sun, slots, skip_flagged),
+            None => arrays.vertices::<E, C, V>(stage, stage.lights, slots, skip_flagged),
+        }
+    }
+}
+
+/// The arrays of a mesh of `f32` positions and normals without vertex
+/// colors, for [`FloatVertices`]'s usual loop.
+struct MeshArrays<'a> {
+    positions: &'a [Vec3],
+    normals: &'a [Vec3],
+    uvs: Option<&'a [Vec2]>,
+}
+
+impl MeshArrays<'_> {
+    /// The vertex loop of a draw call lit in model space from unit
+    /// normals (or unlit) by `lights`, in the material's color.
+    #[inline(always)]
+    fn vertices<E: Effect, C: Color, const V: usize>(
+        &self,
+        stage: &VertexStage<'_, E>,
+        lights: &impl LitColor,
+        slots: &mut [ScreenVertex<V>],
+        skip_flagged: bool,
+    ) {
+        for (i, ((slot, &position), &normal)) in slots.iter_mut().zip(self.positions).zip(self.normals).enumerate() {
+            if skip_flagged && slot.x == UNPROJECTED {
+                continue;
+            }
+            let uv = self.uvs.and_then(|u| u.get(i).copied()).unwrap_or(Vec2::new(0.0, 0.0));
+            let v = MeshVertex { position, normal, color: stage.color, uv };
+            stage.vertex_of::<C, V>(&v, (true, true), lights, i, slot);
+        }
     }
 }
 
