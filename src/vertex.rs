@@ -499,3 +499,94 @@ impl VertexArithmetic for IntegerVertices<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::effect::{Gouraud, MonoGouraud};
+    use crate::mesh::{torus_index_count, torus_vertex_count, MeshData};
+    use crate::scene::{DirectionalLight, Lights, PointLight};
+    use embedded_graphics::pixelcolor::Rgb565;
+
+    const N: usize = torus_vertex_count(12, 8);
+    static TORUS: MeshData<N, { torus_index_count(12, 8) }> = MeshData::torus(12, 8, 1.0, 0.4);
+    static COLORS: [Rgb888; N] = {
+        let mut c = [Rgb888::BLACK; N];
+        let mut i = 0;
+        while i < N {
+            c[i] = Rgb888::new((i * 37 % 256) as u8, (i * 91 % 256) as u8, (i * 13 % 256) as u8);
+            i += 1;
+        }
+        c
+    };
+
+    /// The stored vertex's bits, so that equal means bit for bit.
+    fn bits<const V: usize>(v: &ScreenVertex<V>) -> (i32, i32, u32, u32, [u32; V]) {
+        (v.x, v.y, v.z, v.q.to_bits(), v.attrs.map(f32::to_bits))
+    }
+
+    /// Runs [`FloatVertices`]'s loop over `mesh` and checks each vertex
+    /// against [`VertexStage::vertex`], the general path, for effect `E`.
+    fn loop_matches_each_vertex<E: Effect, const V: usize>(effect: &E, mesh: &Mesh<'_>, model: Mat4, lights: &Lights) {
+        let view_proj = Mat4::perspective_fov_lh(0.9, 320.0 / 240.0, 0.1, 100.0)
+            * Mat4::look_at_lh(Vec3::new(0.5, 1.5, -3.5), Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0));
+        let lighting = Lighting::new(lights, view_proj.eye().unwrap_or(Vec3::ZERO));
+        let scale = model.similarity_scale();
+        let vertex_lights = scale.map_or(lighting, |s| lighting.in_model_space(&model, s));
+        let stage = VertexStage {
+            model,
+            mvp: view_proj * model,
+            normal_matrix: model.normal_matrix(),
+            lights: &vertex_lights,
+            model_space: scale.is_some(),
+            effect,
+            color: Rgb888::new(200, 150, 100),
+            width: 320.0,
+            height: 240.0,
+            subpixel_bits: 6,
+        };
+        // Every third slot flagged: skipped, so left as it was.
+        let flagged = ScreenVertex { x: UNPROJECTED, y: CULLED, ..ScreenVertex::ZERO };
+        let mut slots = [ScreenVertex::<V>::ZERO; N];
+        for slot in slots.iter_mut().step_by(3) {
+            *slot = flagged;
+        }
+        FloatVertices.vertices::<E, Rgb565, V>(&stage, mesh, &mut slots, true);
+        for (i, slot) in slots.iter().enumerate() {
+            let mut one = ScreenVertex::ZERO;
+            stage.vertex::<Rgb565, V>(mesh, i, &mut one);
+            let expected = if i % 3 == 0 { flagged } else { one };
+            assert_eq!(bits(slot), bits(&expected), "vertex {i}");
+        }
+    }
+
+    /// The loop for the usual draw call (with and without a point light,
+    /// with clamped light, without a sun) stores the same bits as the
+    /// general path, and so do draw calls it does not take (vertex
+    /// colors, a model matrix that is not a similarity).
+    #[test]
+    fn the_usual_draw_calls_loop_stores_what_the_general_path_does() {
+        let mesh = TORUS.mesh();
+        let colored = mesh.with_colors(&COLORS).unwrap();
+        assert!(mesh.unit_normals());
+        let turned = Mat4::translation(Vec3::new(0.2, -0.1, 0.3)) * Mat4::rotation_y(0.7) * Mat4::rotation_x(0.4);
+        let squashed = turned * Mat4::scaling(Vec3::new(1.0, 0.5, 1.3));
+        let sun = DirectionalLight { direction: Vec3::new(0.5, -0.7, 1.0), color: Vec3::new(0.85, 0.85, 0.85) };
+        let point = PointLight { position: Vec3::new(2.0, 1.0, -2.0), color: Vec3::new(0.5, 0.4, 0.3) };
+        let lights = [
+            Lights::default(),
+            // Brighter than 1: clamped.
+            Lights { ambient: Vec3::new(0.5, 0.4, 0.3), point: None, directional: Some(sun) },
+            Lights { ambient: Vec3::new(0.1, 0.1, 0.1), point: Some(point), directional: Some(sun) },
+            Lights { ambient: Vec3::new(0.3, 0.3, 0.3), point: None, directional: None },
+        ];
+        for l in &lights {
+            for model in [turned, turned * Mat4::scaling(Vec3::new(2.0, 2.0, 2.0)), squashed] {
+                for m in [&mesh, &colored] {
+                    loop_matches_each_vertex::<_, 3>(&Gouraud, m, model, l);
+                    loop_matches_each_vertex::<_, 1>(&MonoGouraud, m, model, l);
+                }
+            }
+        }
+    }
+}
