@@ -390,10 +390,14 @@ impl VertexArithmetic for FloatVertices {
         stage.clip_position(mesh.position(i))
     }
     /// The usual draw call (`f32` positions and normals, no vertex colors,
-    /// lit in model space from unit normals, no point light) takes a loop
-    /// in which all of that is known: it reads positions and normals in
-    /// step with the slots and tests none of those per vertex. Any other
-    /// takes the general loop. The same arithmetic either way.
+    /// lit in model space from unit normals, or not lit) takes a loop in
+    /// which all of that is known: it reads positions and normals in step
+    /// with the slots and tests none of those per vertex (nor, without a
+    /// point light, that light). Any other takes the general loop, which
+    /// is the trait's own written out again: through a shared function
+    /// taking a closure, `torus` (built-in, `f32`, M4F) took 1.6% more and
+    /// `torus.babylon` in fixed point 1.2% more. The same arithmetic
+    /// either way.
     #[inline(always)]
     fn vertices<E: Effect, C: Color, const V: usize>(
         &self,
