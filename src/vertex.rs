@@ -507,9 +507,10 @@ impl VertexArithmetic for IntegerVertices<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::effect::{Gouraud, MonoGouraud};
+    use crate::effect::{Gouraud, MonoGouraud, Textured};
     use crate::mesh::{torus_index_count, torus_vertex_count, MeshData};
     use crate::scene::{DirectionalLight, Lights, PointLight};
+    use crate::texture::Texture;
     use embedded_graphics::pixelcolor::Rgb565;
 
     const N: usize = torus_vertex_count(12, 8);
@@ -523,6 +524,16 @@ mod tests {
         }
         c
     };
+    static UVS: [Vec2; N] = {
+        let mut u = [Vec2::new(0.0, 0.0); N];
+        let mut i = 0;
+        while i < N {
+            u[i] = Vec2::new(i as f32 * 0.37 - 3.0, 1.5 - i as f32 * 0.11);
+            i += 1;
+        }
+        u
+    };
+    static TEXELS: [u16; 4] = [0x1234, 0xffff, 0, 0x8410];
 
     /// The stored vertex's bits, so that equal means bit for bit.
     fn bits<const V: usize>(v: &ScreenVertex<V>) -> (i32, i32, u32, u32, [u32; V]) {
@@ -567,11 +578,13 @@ mod tests {
     /// The loop for the usual draw call (with and without a point light,
     /// with clamped light, without a sun) stores the same bits as the
     /// general path, and so do draw calls it does not take (vertex
-    /// colors, a model matrix that is not a similarity).
+    /// colors, a model matrix that is not a similarity), for effects
+    /// that read the lit color and texture coordinates.
     #[test]
     fn the_usual_draw_calls_loop_stores_what_the_general_path_does() {
         let mesh = TORUS.mesh();
         let colored = mesh.with_colors(&COLORS).unwrap();
+        let textured: Textured<'_> = Textured::new(Texture::new(&TEXELS, 2, 2).unwrap());
         assert!(mesh.unit_normals());
         let turned = Mat4::translation(Vec3::new(0.2, -0.1, 0.3)) * Mat4::rotation_y(0.7) * Mat4::rotation_x(0.4);
         let squashed = turned * Mat4::scaling(Vec3::new(1.0, 0.5, 1.3));
@@ -586,9 +599,10 @@ mod tests {
         ];
         for l in &lights {
             for model in [turned, turned * Mat4::scaling(Vec3::new(2.0, 2.0, 2.0)), squashed] {
-                for m in [&mesh, &colored] {
-                    loop_matches_each_vertex::<_, 3>(&Gouraud, m, model, l);
-                    loop_matches_each_vertex::<_, 1>(&MonoGouraud, m, model, l);
+                for m in [mesh, colored, mesh.with_uvs(&UVS).unwrap()] {
+                    loop_matches_each_vertex::<_, 3>(&Gouraud, &m, model, l);
+                    loop_matches_each_vertex::<_, 1>(&MonoGouraud, &m, model, l);
+                    loop_matches_each_vertex::<_, 5>(&textured, &m, model, l);
                 }
             }
         }
