@@ -22,20 +22,48 @@ pub trait Color: RgbColor + From<Rgb888> {
     /// The color with these channels, each at most `MAX_R`, `MAX_G`,
     /// `MAX_B` (higher bits are dropped).
     fn from_channels(r: u8, g: u8, b: u8) -> Self;
+    /// The color with these channels, which the caller keeps at most
+    /// `MAX_R`, `MAX_G`, `MAX_B`: they are put in place without a mask (a
+    /// larger channel gives an unspecified color, but no panic). See
+    /// [`Interp::FREE_CHANNEL_MASK`] for which a span loop takes. (By
+    /// default the masked [`Color::from_channels`]: the same color.)
+    #[inline(always)]
+    fn from_channels_in_range(r: u32, g: u32, b: u32) -> Self {
+        Self::from_channels(r as u8, g as u8, b as u8)
+    }
 }
 
 macro_rules! impl_color {
-    ($($t:ident),*) => {$(
+    ($($t:ident($raw:ident, $int:ty): $order:ident, $g_bits:literal, $low_bits:literal;)*) => {$(
         impl Color for embedded_graphics::pixelcolor::$t {
             #[inline(always)]
             fn from_channels(r: u8, g: u8, b: u8) -> Self {
                 Self::new(r, g, b)
             }
+            #[inline(always)]
+            fn from_channels_in_range(r: u32, g: u32, b: u32) -> Self {
+                let (high, low) = impl_color!(@ $order, r, b);
+                let (high, g, low) = (high as $int, g as $int, low as $int);
+                embedded_graphics::pixelcolor::raw::$raw::new(high << ($g_bits + $low_bits) | g << $low_bits | low).into()
+            }
         }
     )*};
+    (@ Rgb, $r:ident, $b:ident) => { ($r, $b) };
+    (@ Bgr, $r:ident, $b:ident) => { ($b, $r) };
 }
 
-impl_color!(Rgb565, Bgr565, Rgb555, Bgr555, Rgb666, Bgr666, Rgb888, Bgr888);
+// Each color's raw value, its channel order, and the bits of its green and
+// low channels.
+impl_color! {
+    Rgb565(RawU16, u16): Rgb, 6, 5;
+    Bgr565(RawU16, u16): Bgr, 6, 5;
+    Rgb555(RawU16, u16): Rgb, 5, 5;
+    Bgr555(RawU16, u16): Bgr, 5, 5;
+    Rgb666(RawU24, u32): Rgb, 6, 6;
+    Bgr666(RawU24, u32): Bgr, 6, 6;
+    Rgb888(RawU24, u32): Rgb, 8, 8;
+    Bgr888(RawU24, u32): Bgr, 8, 8;
+}
 
 /// Most varyings any effect may ask for.
 pub const MAX_VARYINGS: usize = 8;
@@ -234,7 +262,19 @@ fn to_rgb888(c: [f32; 3]) -> Rgb888 {
 
 #[inline(always)]
 fn shade_rgb<C: Color, S: Interp>(v: &[S; MAX_VARYINGS]) -> C {
-    C::from_channels(v[0].channel(), v[1].channel(), v[2].channel())
+    pixel::<C, S>(v[0].channel(), v[1].channel(), v[2].channel())
+}
+
+/// The pixel of three channels a span loop keeps in range: masked where
+/// that is free ([`Interp::FREE_CHANNEL_MASK`]), else put in place as they
+/// are.
+#[inline(always)]
+fn pixel<C: Color, S: Interp>(r: u32, g: u32, b: u32) -> C {
+    if S::FREE_CHANNEL_MASK {
+        C::from_channels(r as u8, g as u8, b as u8)
+    } else {
+        C::from_channels_in_range(r, g, b)
+    }
 }
 
 /// Flat shading: one N·L per triangle from its geometric normal.
@@ -351,7 +391,9 @@ impl Effect for MonoGouraud {
     fn shade<C: Color, S: Interp>(&self, color: &Rgb888, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
         // (Each channel's factor is the same for every pixel: the compiler
         // takes it out of the span loop.)
-        let level = v[0].channel() as u32;
+        // A byte, as the products below assume (on the M0+ the mask also
+        // measured quicker: torus.babylon-mono 0.3%).
+        let level = v[0].channel() as u8 as u32;
         C::from_channels(
             mono_channel(level, color.r(), C::MAX_R),
             mono_channel(level, color.g(), C::MAX_G),
@@ -598,8 +640,10 @@ impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, 
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], dst: C) -> C {
         let t = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16(), B::ALPHA);
         // Channel `c`'s light: its own varying, or the one level.
-        let level = |c: usize| v[2 + if L::CHANNELS.len() == 1 { 0 } else { c }].channel() as u32 + 1;
-        let light = |t: u32, c: usize| (t * level(c)) >> 8;
+        // (Wrapping: a level the planes keep below 256 does not wrap, and
+        // no mask to a byte is paid for outside the contract.)
+        let level = |c: usize| v[2 + if L::CHANNELS.len() == 1 { 0 } else { c }].channel().wrapping_add(1);
+        let light = |t: u32, c: usize| t.wrapping_mul(level(c)) >> 8;
         let alpha = if B::ALPHA { scale_alpha(t.a, self.opacity) } else { 255 };
         B::blend(
             rescale(light(t.r, 0), 31, C::MAX_R),
@@ -765,13 +809,42 @@ impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
             let lit = u.color[k].mul(light[k].clamp_between(zero, one)).add(u.specular[k].mul(shine[k]));
             lit.clamp_between(zero, one).mul(S::from_f32(max as f32)).add(S::from_f32(0.5)).channel()
         };
-        C::from_channels(channel(0, C::MAX_R), channel(1, C::MAX_G), channel(2, C::MAX_B))
+        pixel::<C, S>(channel(0, C::MAX_R), channel(1, C::MAX_G), channel(2, C::MAX_B))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use embedded_graphics::pixelcolor::{Bgr555, Bgr565, Bgr666, Bgr888, Rgb555, Rgb565, Rgb666};
+
+    /// Every channel value in range, each channel on its own and with the
+    /// others at their largest: the unmasked constructor puts each where
+    /// embedded-graphics does.
+    fn in_range_channels_build_what_masked_ones_do<C: Color + core::fmt::Debug>() {
+        let (mr, mg, mb) = (C::MAX_R, C::MAX_G, C::MAX_B);
+        for v in 0..=255u8 {
+            let cases =
+                [(v.min(mr), 0, 0), (0, v.min(mg), 0), (0, 0, v.min(mb)), (v.min(mr), mg, mb), (mr, v.min(mg), mb), (mr, mg, v.min(mb))];
+            for (r, g, b) in cases {
+                let built = C::from_channels_in_range(r.into(), g.into(), b.into());
+                assert_eq!(built, C::from_channels(r, g, b), "{r},{g},{b}");
+                assert_eq!((built.r(), built.g(), built.b()), (r, g, b));
+            }
+        }
+    }
+
+    #[test]
+    fn every_color_type_places_its_channels() {
+        in_range_channels_build_what_masked_ones_do::<Rgb565>();
+        in_range_channels_build_what_masked_ones_do::<Bgr565>();
+        in_range_channels_build_what_masked_ones_do::<Rgb555>();
+        in_range_channels_build_what_masked_ones_do::<Bgr555>();
+        in_range_channels_build_what_masked_ones_do::<Rgb666>();
+        in_range_channels_build_what_masked_ones_do::<Bgr666>();
+        in_range_channels_build_what_masked_ones_do::<Rgb888>();
+        in_range_channels_build_what_masked_ones_do::<Bgr888>();
+    }
 
     #[test]
     fn mono_channels_are_the_rounded_product_within_the_depth() {
