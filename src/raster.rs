@@ -524,35 +524,13 @@ pub fn sort_by_y<T: Copy>(mut t: [T; 3], y: impl Fn(T) -> i32) -> [T; 3] {
     t
 }
 
-/// Whether triangles are queued with their corners sorted by `y` (on
-/// ARMv6-M), or sorted by [`rasterize`] at each strip they are drawn in.
-/// Measured with the same frames: sorted when queued, `torus.babylon` in
-/// fixed point on the M0+ took 2,161,120 instructions against 2,277,840
-/// (`monkey` 3,444,960 against 3,616,080); on the M4F `torus.babylon` in
-/// `f32` 586,800 against 597,320, but there the general firmware of
-/// `scripts/effects-bench.sh` then drew the flat scene in 1.40% more
-/// instructions than the flat-only one (0.73% with the sort here), past
-/// the 1% a scene may pay for effects it does not use: the registers of
-/// the draw loop.
-pub const SORTED_WHEN_QUEUED: bool = cfg!(soft3d_armv6m);
-
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
 /// `P` and depth mode `D`, stepping attributes in `S`. Its corners come
-/// sorted by `y` if [`SORTED_WHEN_QUEUED`], else in any order.
+/// in any order.
 ///
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
-///
-/// Most triangles take the lean path here: vertex values converted to `S`
-/// once, planes set up in `S` and stepped with additions. A triangle whose stepped
-/// values could leave their ranges (a wrapping scalar's rounding, or a
-/// triangle reaching toward the guard band) takes `rasterize_careful`.
-///
-/// Not inlined into the material's dispatched program, although that
-/// would save a forwarding jump per triangle (0.5% of `torus.babylon`):
-/// the flat span loop then took 18.3 instructions a pixel instead of
-/// 17.3 (fixed point, M4F).
-#[inline(never)]
+#[inline]
 pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     target: &mut StripTarget<'_, C, Z::Value>,
     effect: &E,
@@ -568,10 +546,43 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     D: DepthMode,
     Z: DepthFormat,
 {
+    rasterize_sorted::<C, S, E, P, D, Z, V>(target, effect, uniforms, sort_by_y(tri, |v| v.y), face, subpixel_bits)
+}
+
+/// [`rasterize`] for corners sorted by `y` ([`sort_by_y`]), as the
+/// renderer queues them: sorted once there rather than at every strip a
+/// triangle is drawn in, `torus.babylon` `f32` on the M4F took 541,160
+/// instructions against 553,960 (`monkey` 986,720 against 1,002,640; on
+/// the M0+ `torus.babylon` in fixed point 2,161,120 against 2,277,840).
+///
+/// Most triangles take the lean path here: vertex values converted to `S`
+/// once, planes set up in `S` and stepped with additions. A triangle whose stepped
+/// values could leave their ranges (a wrapping scalar's rounding, or a
+/// triangle reaching toward the guard band) takes `rasterize_careful`.
+///
+/// Not inlined into the material's dispatched program, although that
+/// would save a forwarding jump per triangle (0.5% of `torus.babylon`):
+/// the flat span loop then took 18.3 instructions a pixel instead of
+/// 17.3 (fixed point, M4F).
+#[inline(never)]
+pub(crate) fn rasterize_sorted<C, S, E, P, D, Z, const V: usize>(
+    target: &mut StripTarget<'_, C, Z::Value>,
+    effect: &E,
+    uniforms: &E::Uniforms<S>,
+    tri: [&ScreenVertex<V>; 3],
+    face: C,
+    subpixel_bits: u32,
+) where
+    C: Color,
+    S: Interp,
+    E: Effect,
+    P: Perspective,
+    D: DepthMode,
+    Z: DepthFormat,
+{
     let f = subpixel_bits + 1;
-    // Sorted by y (where not already, see `SORTED_WHEN_QUEUED`): a top,
-    // b middle, c bottom.
-    let [a, b, c] = if SORTED_WHEN_QUEUED { tri } else { sort_by_y(tri, |v| v.y) };
+    // a top, b middle, c bottom.
+    let [a, b, c] = tri;
     let area = signed_area2(a, b, c);
     if area == 0 {
         return;
@@ -763,10 +774,10 @@ impl<'t, const V: usize> Rows<'t, V> {
                 (bound_at(a, c, y, self.f), bound_at(top, bottom, y, self.f))
             };
             let (left, right) = if self.t.mid_left { (short, long) } else { (long, short) };
-            // `max` and `min`, not `clamp`: with bounds known only at run
-            // time, `clamp` asserts at every call that they are ordered.
-            let x0 = left.max(0).min(self.width);
-            let x1 = right.max(0).min(self.width);
+            // Each bound clamped on its own side only: a span off either
+            // side of the strip is then empty as it is.
+            let x0 = left.max(0);
+            let x1 = right.min(self.width);
             self.y += 1;
             if x0 < x1 {
                 return Some((y, x0, x1));

@@ -49,10 +49,13 @@ const NONE: u16 = u16::MAX;
 /// recomputed from its vertices when needed).
 #[derive(Clone, Copy, Debug)]
 struct TriRecord {
+    /// Corners, sorted by `y` (top first) when queued.
     v: [u16; 3],
     /// Until `finish` bins the triangle, the first strip it covers (found
     /// when it was queued); then the next triangle of its strip's list.
     next: u16,
+    /// Written only for effects that use a face color (others leave what
+    /// a previous frame left there).
     face: [u8; 3],
 }
 
@@ -158,7 +161,7 @@ where
         while let Some((tri, face)) = queue.pop_before(end) {
             // Read and converted only for effects that use it.
             let face = if E::USES_FACE { C::from(Rgb888::new(face[0], face[1], face[2])) } else { C::BLACK };
-            raster::rasterize::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS);
+            raster::rasterize_sorted::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS);
         }
     }
 }
@@ -207,7 +210,8 @@ impl<const V: usize> StripQueue<'_, V> {
         }
         let vs = self.vertices;
         let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
-        let bottom = if raster::SORTED_WHEN_QUEUED { tri[2].y } else { tri[0].y.max(tri[1].y).max(tri[2].y) };
+        // (Corners sorted by y when queued: the last is the bottom.)
+        let bottom = tri[2].y;
         if first_row_at_or_below(bottom, self.bits) > self.strip_end {
             self.tris[i as usize].next = NONE;
             if self.next_tail == NONE {
@@ -604,14 +608,14 @@ where
             // Lit only if the triangle is queued (not for the back faces).
             let face = move || {
                 if !E::USES_FACE {
-                    return Rgb888::BLACK;
+                    return None;
                 }
                 // Geometric normal in model space, to world by the normal matrix.
                 let (a, b, c) = (p(t[0] as usize), p(t[1] as usize), p(t[2] as usize));
                 let normal = stage.normal_matrix.transform((b - a).cross(c - a)).normalize_or_zero();
                 let position = model.transform_point3((a + b + c) * (1.0 / 3.0));
                 let color = mesh.colors().map_or(material.color, |cs| cs[t[0] as usize]);
-                material.effect.face(&FaceInput { position, normal, color }, lights)
+                Some(material.effect.face(&FaceInput { position, normal, color }, lights))
             };
             // The indices from `t`: arrays of them captured by reference were
             // written to the stack for every triangle, for this rare path
@@ -665,11 +669,8 @@ where
                 let input = VertexInput::new::<C, E>(Vec3::ZERO, Vec3::ZERO, v.color, Vec2::new(0.0, 0.0), &lights);
                 vertex_varyings::<C, E, V>(&material.effect, &input, &lights)
             };
-            let face = if E::USES_FACE {
-                material.effect.face(&FaceInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: tri[0].color }, &lights)
-            } else {
-                Rgb888::BLACK
-            };
+            let face = E::USES_FACE
+                .then(|| material.effect.face(&FaceInput { position: Vec3::ZERO, normal: Vec3::ZERO, color: tri[0].color }, &lights));
             let mut poly: Polygon<WindowVertex<V>> = Polygon::new();
             let mut valid = true;
             for v in &tri {
@@ -716,7 +717,7 @@ where
     fn assemble(
         &mut self,
         corners: Corners,
-        face: impl Fn() -> Rgb888,
+        face: impl Fn() -> Option<Rgb888>,
         cull: Cull,
         perspective: bool,
         clip_vertex: impl Fn(usize) -> ClipVertex<V>,
@@ -763,7 +764,13 @@ where
 
     /// Snaps a convex window-space polygon (clipping it to the guard band
     /// if needed), stores its new vertices and queues it as a fan.
-    fn emit_polygon(&mut self, mut poly: Polygon<WindowVertex<V>>, face: Rgb888, cull: Cull, perspective: bool) -> Result<(), DrawError> {
+    fn emit_polygon(
+        &mut self,
+        mut poly: Polygon<WindowVertex<V>>,
+        face: Option<Rgb888>,
+        cull: Cull,
+        perspective: bool,
+    ) -> Result<(), DrawError> {
         // A vertex whose projection overflowed (w tiny next to x or y, from
         // a degenerate projection) has no place to clip from: the triangle
         // is skipped and counted invalid, as for window coordinates beyond
@@ -820,10 +827,10 @@ where
 
     /// Culls a snapped triangle (degenerate, back-facing, off screen) or
     /// queues it with its color `face()`, called only then (a flat effect
-    /// lights a face per call). Inlined into the draw loop, the hot path
-    /// of geometry.
+    /// lights a face per call; `None` for effects without face colors).
+    /// Inlined into the draw loop, the hot path of geometry.
     #[inline(always)]
-    fn emit(&mut self, corners: Corners, face: impl Fn() -> Rgb888, cull: Cull) -> Result<(), DrawError> {
+    fn emit(&mut self, corners: Corners, face: impl Fn() -> Option<Rgb888>, cull: Cull) -> Result<(), DrawError> {
         let vs = &self.b.vertices;
         let [a, b, c] = [&vs[corners[0] as usize], &vs[corners[1] as usize], &vs[corners[2] as usize]];
         let area = signed_area2(a, b, c);
@@ -836,37 +843,39 @@ where
             return Ok(());
         }
         let bits = S::SUBPIXEL_BITS;
-        // Sorted by y for the rasterizer once here where that measured
-        // quicker (see `raster::SORTED_WHEN_QUEUED`).
-        let (corners, top, bottom) = if raster::SORTED_WHEN_QUEUED {
-            let sorted = raster::sort_by_y([(corners[0], a.y), (corners[1], b.y), (corners[2], c.y)], |(_, y)| y);
-            (sorted.map(|(i, _)| i), sorted[0].1, sorted[2].1)
-        } else {
-            (corners, a.y.min(b.y).min(c.y), a.y.max(b.y).max(c.y))
-        };
-        let first = first_row_at_or_below(top, bits).max(0).min(self.b.height as i32);
-        let end = first_row_at_or_below(bottom, bits).max(0).min(self.b.height as i32);
+        // Sorted by y once here for the rasterizer (see
+        // `raster::rasterize_sorted`).
+        let sorted = raster::sort_by_y([(corners[0], a.y), (corners[1], b.y), (corners[2], c.y)], |(_, y)| y);
+        let (corners, top, bottom) = (sorted.map(|(i, _)| i), sorted[0].1, sorted[2].1);
+        let first = first_row_at_or_below(top, bits);
+        let end = first_row_at_or_below(bottom, bits);
         // Columns work like rows: pixel x is covered only if x_min <= center < x_max.
         let left = first_row_at_or_below(a.x.min(b.x).min(c.x), bits);
         let right = first_row_at_or_below(a.x.max(b.x).max(c.x), bits);
         // A triangle between pixel centers (no row or no column center in
         // its bounds) covers nothing: dropped here, it costs no queueing,
         // binning or setup.
-        if first >= end || left >= right || right <= 0 || left >= self.b.width as i32 {
+        let (width, height) = (self.b.width as i32, self.b.height as i32);
+        if first >= end || left >= right || end <= 0 || right <= 0 || first >= height || left >= width {
             self.stats.off_screen += 1;
             return Ok(());
         }
-        // `first < end <= height`: a row of the frame. Strips of a power
-        // of two rows (the usual) take a shift: without a divide
-        // instruction (ARMv6-M) a division is a library call.
+        // `0 <= first < height`: a row of the frame. Without a divide
+        // instruction (ARMv6-M) a division is a library call, and strips
+        // of a power of two rows (the usual) take a shift.
+        let first = first.max(0) as usize;
         let s = match self.strip_shift {
-            Some(shift) => first as usize >> shift,
-            None => first as usize / self.b.strip,
+            Some(shift) if cfg!(soft3d_armv6m) => first >> shift,
+            _ => first / self.b.strip,
         };
-        let face = face();
-        let rec = TriRecord { v: corners, next: s as u16, face: [face.r(), face.g(), face.b()] };
         let capacity = self.b.triangles.len();
-        *self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })? = rec;
+        let rec = self.b.triangles.get_mut(self.n_triangles).ok_or(DrawError::TriangleCapacity { capacity })?;
+        rec.v = corners;
+        rec.next = s as u16;
+        // Written only for effects that read it.
+        if let Some(face) = face() {
+            rec.face = [face.r(), face.g(), face.b()];
+        }
         self.n_triangles += 1;
         Ok(())
     }
