@@ -243,11 +243,11 @@ impl LitColor for IntegerLighting<'_> {
 /// survives the sum (one multiply-add per value). Without: tests on the
 /// bits (a float operation would be a library call).
 #[inline(always)]
-fn all_finite(values: &[f32]) -> bool {
+fn all_finite<'a>(values: impl IntoIterator<Item = &'a f32>) -> bool {
     if crate::math::HARD_FLOAT {
-        values.iter().fold(0.0, |sum, v| sum + v * 0.0) == 0.0
+        values.into_iter().fold(0.0, |sum, v| sum + v * 0.0) == 0.0
     } else {
-        values.iter().fold(true, |ok, v| ok & v.is_finite())
+        values.into_iter().fold(true, |ok, v| ok & v.is_finite())
     }
 }
 
@@ -276,7 +276,8 @@ pub(crate) fn project_into<const V: usize>(
     let mut flags = 0;
     // A non-finite varying (a NaN texture coordinate) would be drawn as
     // garbage: the vertex is invalid like a non-finite position.
-    if !all_finite(&[c.x, c.y, c.z, c.w]) || !all_finite(&v.attrs) {
+    // (One test for both: a compare less a vertex than two.)
+    if !all_finite([c.x, c.y, c.z, c.w].iter().chain(&v.attrs)) {
         flags |= NOT_FINITE;
     } else {
         if c.z < 0.0 {
