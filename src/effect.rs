@@ -639,9 +639,10 @@ impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, 
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], dst: C) -> C {
         let t = self.texture.sample::<F, W>(v[0].to_bits16(), v[1].to_bits16(), B::ALPHA);
-        // Channel `c`'s light: its own varying, or the one level.
-        // (Wrapping: a level the planes keep below 256 does not wrap, and
-        // no mask to a byte is paid for outside the contract.)
+        // Channel `c`'s light: its own varying, or the one level. The
+        // planes keep a level below 256, so nothing wraps; the wrapping
+        // operations make a level out of range a wrong color rather than
+        // a panic, without a mask to a byte at every pixel.
         let level = |c: usize| v[2 + if L::CHANNELS.len() == 1 { 0 } else { c }].channel().wrapping_add(1);
         let light = |t: u32, c: usize| t.wrapping_mul(level(c)) >> 8;
         let alpha = if B::ALPHA { scale_alpha(t.a, self.opacity) } else { 255 };

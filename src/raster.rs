@@ -524,35 +524,36 @@ pub fn sort_by_y<T: Copy>(mut t: [T; 3], y: impl Fn(T) -> i32) -> [T; 3] {
     t
 }
 
+/// A triangle's corners sorted by `y`, top first, as [`rasterize`] takes
+/// them.
+#[derive(Clone, Copy)]
+pub struct SortedCorners<'v, const V: usize>([&'v ScreenVertex<V>; 3]);
+
+impl<'v, const V: usize> SortedCorners<'v, V> {
+    /// `corners` in any order, sorted (equal `y`s keep their order).
+    #[inline]
+    pub fn new(corners: [&'v ScreenVertex<V>; 3]) -> Self {
+        Self(sort_by_y(corners, |v| v.y))
+    }
+
+    /// Corners already sorted (the renderer sorts them once, when it
+    /// queues the triangle).
+    #[inline(always)]
+    pub(crate) fn presorted(corners: [&'v ScreenVertex<V>; 3]) -> Self {
+        Self(corners)
+    }
+}
+
 /// Rasterizes one triangle into a strip with effect `E`, interpolation
-/// `P` and depth mode `D`, stepping attributes in `S`. Its corners come
-/// in any order.
+/// `P` and depth mode `D`, stepping attributes in `S`.
 ///
 /// `face` is the triangle's color (already converted) for effects that
 /// use one. Degenerate triangles (zero snapped area) draw nothing.
-#[inline]
-pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
-    target: &mut StripTarget<'_, C, Z::Value>,
-    effect: &E,
-    uniforms: &E::Uniforms<S>,
-    tri: [&ScreenVertex<V>; 3],
-    face: C,
-    subpixel_bits: u32,
-) where
-    C: Color,
-    S: Interp,
-    E: Effect,
-    P: Perspective,
-    D: DepthMode,
-    Z: DepthFormat,
-{
-    rasterize_sorted::<C, S, E, P, D, Z, V>(target, effect, uniforms, sort_by_y(tri, |v| v.y), face, subpixel_bits)
-}
-
-/// [`rasterize`] for corners sorted by `y` ([`sort_by_y`]), as the
-/// renderer queues them: sorted once there rather than at every strip a
-/// triangle is drawn in, `torus.babylon` `f32` on the M4F took 541,160
-/// instructions against 553,960 (`monkey` 986,720 against 1,002,640; on
+///
+/// The corners come sorted ([`SortedCorners`]): the renderer sorts them
+/// once, when it queues the triangle, rather than at every strip the
+/// triangle is drawn in (`torus.babylon` `f32` on the M4F 541,160
+/// instructions against 553,960, `monkey` 986,720 against 1,002,640; on
 /// the M0+ `torus.babylon` in fixed point 2,161,120 against 2,277,840).
 ///
 /// Most triangles take the lean path here: vertex values converted to `S`
@@ -565,11 +566,11 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
 /// the flat span loop then took 18.3 instructions a pixel instead of
 /// 17.3 (fixed point, M4F).
 #[inline(never)]
-pub(crate) fn rasterize_sorted<C, S, E, P, D, Z, const V: usize>(
+pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     target: &mut StripTarget<'_, C, Z::Value>,
     effect: &E,
     uniforms: &E::Uniforms<S>,
-    tri: [&ScreenVertex<V>; 3],
+    SortedCorners(tri): SortedCorners<'_, V>,
     face: C,
     subpixel_bits: u32,
 ) where

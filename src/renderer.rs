@@ -27,7 +27,7 @@ use crate::effect::{vertex_varyings, Color, Effect, FaceInput, VertexInput};
 use crate::material::{Cull, DepthMode, Material, Perspective};
 use crate::math::{Mat4, Vec2, Vec3};
 use crate::mesh::Mesh;
-use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, StripTarget};
+use crate::raster::{self, first_row_at_or_below, signed_area2, snap_f64, ScreenVertex, SortedCorners, StripTarget};
 use crate::scene::{Camera, Lighting, Lights};
 use crate::settings::{DepthFormat, DepthValue, FixedPoint, Settings};
 use crate::tri::TriVertex;
@@ -161,7 +161,14 @@ where
         while let Some((tri, face)) = queue.pop_before(end) {
             // Read and converted only for effects that use it.
             let face = if E::USES_FACE { C::from(Rgb888::new(face[0], face[1], face[2])) } else { C::BLACK };
-            raster::rasterize_sorted::<C, S::Interp, E, P, D, S::Depth, V>(target, &self.effect, &uniforms, tri, face, S::SUBPIXEL_BITS);
+            raster::rasterize::<C, S::Interp, E, P, D, S::Depth, V>(
+                target,
+                &self.effect,
+                &uniforms,
+                SortedCorners::presorted(tri),
+                face,
+                S::SUBPIXEL_BITS,
+            );
         }
     }
 }
@@ -844,7 +851,7 @@ where
         }
         let bits = S::SUBPIXEL_BITS;
         // Sorted by y once here for the rasterizer (see
-        // `raster::rasterize_sorted`).
+        // `raster::rasterize`).
         let sorted = raster::sort_by_y([(corners[0], a.y), (corners[1], b.y), (corners[2], c.y)], |(_, y)| y);
         let (corners, top, bottom) = (sorted.map(|(i, _)| i), sorted[0].1, sorted[2].1);
         let first = first_row_at_or_below(top, bits);
