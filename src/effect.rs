@@ -185,6 +185,17 @@ pub trait Effect: Copy {
     /// (for effects that blend; the others ignore it and the load is
     /// optimized away).
     fn shade<C: Color, S: Interp>(&self, u: &Self::Uniforms<S>, face: C, v: &[S; MAX_VARYINGS], dst: C) -> C;
+
+    /// Whether [`Effect::shade`] can read what it samples: false for a
+    /// texture without texels (which [`Texture::new`] never makes). Tested
+    /// once a span, so that the span loop, knowing it, has no such test
+    /// at each pixel's texel fetch.
+    ///
+    /// [`Texture::new`]: crate::texture::Texture::new
+    #[inline(always)]
+    fn samples(&self) -> bool {
+        true
+    }
 }
 
 /// The first `V` varyings `effect` computes for one vertex (the renderer
@@ -634,6 +645,11 @@ impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, 
 
     fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
         Rgb888::BLACK
+    }
+
+    #[inline(always)]
+    fn samples(&self) -> bool {
+        !self.texture.texels().is_empty()
     }
 
     #[inline(always)]

@@ -1131,6 +1131,11 @@ fn span<C, S, E, P, D, Z, const CLAMP: bool>(
     D: DepthMode,
     Z: DepthFormat,
 {
+    // (Per span, not per triangle: at the top of `rasterize` the test did
+    // not reach the pixel loop, and `wall-tex` fixed M4F took 7% more.)
+    if !effect.samples() {
+        return;
+    }
     if P::CORRECT && P::SPAN > 1 {
         // Exact at the start of every segment of SPAN pixels (and at the
         // span's end), linear in between.

@@ -432,6 +432,7 @@ pub struct Frame<'r, 'm, C, const V: usize, S: Settings> {
     background: C,
     stats: FrameStats,
     /// `log2` of the strip height if it is a power of two (the usual).
+    /// Read only on ARMv6-M, which has no divide instruction.
     strip_shift: Option<u32>,
 }
 
