@@ -107,9 +107,9 @@ impl<'a> Texture<'a> {
     #[inline(always)]
     fn index<W: Wrap>(&self, x: i32, y: i32) -> usize {
         let x = W::apply(x, self.width_log2) as usize;
-        let y = W::apply(y, self.height_log2) as usize;
-        // Both are within the texture after `apply`; the mask keeps the
-        // index provably in bounds without a panic path.
+        // The mask below keeps the index provably in bounds without a
+        // panic path, and wraps a repeating `y` by itself.
+        let y = if W::PERIODIC { y } else { W::apply(y, self.height_log2) } as usize;
         (y << self.width_log2 | x) & (self.texels.len() - 1)
     }
 
@@ -252,3 +252,26 @@ pub use convert::{resample, rgb565, OwnedTexture};
 mod load;
 #[cfg(feature = "textures")]
 pub use load::{read_image, read_jpeg, read_png};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn texel_wraps_and_clamps_any_coordinate() {
+        // A rectangular texture (8 by 4) whose every texel is its own index.
+        let texels: [u16; 32] = core::array::from_fn(|i| i as u16);
+        let t = Texture::new(&texels, 8, 4).unwrap();
+        for y in -70i32..70 {
+            for x in -70i32..70 {
+                let repeat = (y.rem_euclid(4) * 8 + x.rem_euclid(8)) as u16;
+                assert_eq!(t.texel::<Repeat>(x, y), repeat, "repeat {x},{y}");
+                let clamp = (y.clamp(0, 3) * 8 + x.clamp(0, 7)) as u16;
+                assert_eq!(t.texel::<Clamp>(x, y), clamp, "clamp {x},{y}");
+            }
+        }
+        for (x, y) in [(i32::MIN, i32::MAX), (i32::MAX, i32::MIN), (i32::MIN, i32::MIN)] {
+            assert_eq!(t.texel::<Repeat>(x, y), (y.rem_euclid(4) * 8 + x.rem_euclid(8)) as u16);
+        }
+    }
+}
