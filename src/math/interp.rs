@@ -108,7 +108,11 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// [`Interp::clamp_between`], in one clamp (a perspective division).
     fn mul_clamped(self, o: Self, lo: Self, hi: Self) -> Self;
     /// The perspective division's factor `1 / q` from an interpolated
-    /// `self = q * Q_SCALE` (positive; zero or less gives a large value).
+    /// `self = q * Q_SCALE`, which the rasterizer keeps positive (a
+    /// triangle whose `q` could come near zero takes the careful path,
+    /// which clamps `q` into range). Zero or less gives the largest value
+    /// in fixed point; `f32` divides without a test (a compare and a
+    /// select at every pixel less), and no value makes either panic.
     fn q_recip(self) -> Self;
     /// `min(max(self, lo), hi)`.
     fn clamp_between(self, lo: Self, hi: Self) -> Self;
@@ -366,11 +370,7 @@ impl Interp for f32 {
     }
     #[inline(always)]
     fn q_recip(self) -> Self {
-        if self > 1e-30 {
-            1.0 / self
-        } else {
-            1e30
-        }
+        1.0 / self
     }
     #[inline]
     fn rsqrt(self) -> Self {
