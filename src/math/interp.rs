@@ -111,8 +111,9 @@ pub trait Interp: Copy + Default + PartialEq + PartialOrd + core::fmt::Debug + '
     /// `self = q * Q_SCALE`, which the rasterizer keeps positive (a
     /// triangle whose `q` could come near zero takes the careful path,
     /// which clamps `q` into range). Zero or less gives the largest value
-    /// in fixed point; `f32` divides without a test (a compare and a
-    /// select at every pixel less), and no value makes either panic.
+    /// in fixed point. `f32` divides without testing `q` first, which
+    /// saves a compare and a select at every pixel. No value makes either
+    /// panic.
     fn q_recip(self) -> Self;
     /// `min(max(self, lo), hi)`.
     fn clamp_between(self, lo: Self, hi: Self) -> Self;

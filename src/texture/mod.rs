@@ -140,7 +140,10 @@ impl<'a> Texture<'a> {
 pub trait Wrap: 'static {
     /// Name for reports.
     const NAME: &'static str;
-    /// Whether coordinates repeat with the texture's size as period.
+    /// Whether coordinates repeat with the texture's size as period. A
+    /// periodic wrap's [`Wrap::apply`] must then be `t mod 2^size_log2`
+    /// (as [`Repeat`]'s is): a texel's row is wrapped by the index's own
+    /// mask, without `apply`.
     const PERIODIC: bool;
     /// Maps an integer texel coordinate into `[0, 2^size_log2)`.
     fn apply(t: i32, size_log2: u32) -> i32;
