@@ -189,6 +189,15 @@ pub fn first_row_at_or_below(y: i32, subpixel_bits: u32) -> i32 {
     (y - (1 << subpixel_bits) + (1 << f) - 1) >> f
 }
 
+/// The center of pixel row `row` in snapped units of `2^-F` pixels
+/// (`F = subpixel_bits + 1`): a snapped `y` lies below it exactly when
+/// [`first_row_at_or_below`]`(y)` is past `row`. For `|row|` below
+/// `2^(30 - F)`.
+#[inline]
+pub fn row_center(row: i32, subpixel_bits: u32) -> i32 {
+    (row << (subpixel_bits + 1)) + (1 << subpixel_bits)
+}
+
 /// `m` as `i32` if it fits. On the M4F, as "its high word is its low
 /// word's sign", one compare with a shifted operand: `i32::try_from` took
 /// five instructions there (`torus.babylon` `f32` 0.9% and `monkey` 1.2%
@@ -1218,6 +1227,20 @@ fn span<C, S, E, P, D, Z, const CLAMP: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_row_center_splits_the_rows_at_and_below() {
+        for bits in 0..=8 {
+            let unit = 1 << (bits + 1);
+            for row in [-3, 0, 1, 15, 16, 239, 240] {
+                let center = row_center(row, bits);
+                // Every snapped y within two rows of the center.
+                for y in (center - 2 * unit..=center + 2 * unit).filter(|y| y % 2 == 0) {
+                    assert_eq!(y > center, first_row_at_or_below(y, bits) > row, "bits {bits}, row {row}, y {y}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn corners_sort_by_y_keeping_ties_in_order() {

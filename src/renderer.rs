@@ -180,23 +180,26 @@ where
 pub struct StripQueue<'q, const V: usize> {
     tris: &'q mut [TriRecord],
     vertices: &'q [ScreenVertex<V>],
-    /// Heads of the two lists: binned here, carried from above.
-    fresh: u16,
-    old: u16,
+    /// Heads of the two lists: binned here, carried from above. In `u32`,
+    /// not `u16` as stored: as `u16` they were zero-extended again at
+    /// every use, five instructions a triangle on the M4F.
+    fresh: u32,
+    old: u32,
     /// The list carried to the next strip.
     next_head: u16,
     next_tail: u16,
-    /// The frame row below the strip.
-    strip_end: i32,
-    /// Sub-pixel bits of the snapped vertices.
-    bits: u32,
+    /// The center of the frame row below the strip (see
+    /// [`raster::row_center`]): a triangle whose bottom vertex's snapped
+    /// `y` is greater reaches below the strip. One compare a triangle,
+    /// not the bottom vertex's row and a compare.
+    carry_below: i32,
 }
 
 impl<const V: usize> StripQueue<'_, V> {
     /// Index of the next triangle, `NONE` when there is none.
     #[inline(always)]
     fn peek(&self) -> u16 {
-        self.fresh.min(self.old)
+        self.fresh.min(self.old) as u16
     }
 
     /// The next triangle's vertices and face color, if its index is below
@@ -205,21 +208,21 @@ impl<const V: usize> StripQueue<'_, V> {
     fn pop_before(&mut self, end: u16) -> Option<([&ScreenVertex<V>; 3], [u8; 3])> {
         // Merge the two lists by index (an empty list's head, NONE, is
         // above every index).
-        let i = self.peek();
-        if i >= end {
+        let i = self.fresh.min(self.old);
+        if i >= end as u32 {
             return None;
         }
         let rec = *self.tris.get(i as usize)?;
         if i == self.fresh {
-            self.fresh = rec.next;
+            self.fresh = rec.next as u32;
         } else {
-            self.old = rec.next;
+            self.old = rec.next as u32;
         }
+        let i = i as u16;
         let vs = self.vertices;
         let tri = [&vs[rec.v[0] as usize], &vs[rec.v[1] as usize], &vs[rec.v[2] as usize]];
         // (Corners sorted by y when queued: the last is the bottom.)
-        let bottom = tri[2].y;
-        if first_row_at_or_below(bottom, self.bits) > self.strip_end {
+        if tri[2].y > self.carry_below {
             self.tris[i as usize].next = NONE;
             if self.next_tail == NONE {
                 self.next_head = i;
@@ -926,12 +929,11 @@ where
             let mut queue = StripQueue {
                 tris: &mut *tris,
                 vertices: &*b.vertices,
-                fresh: b.heads[s],
-                old: carried,
+                fresh: b.heads[s] as u32,
+                old: carried as u32,
                 next_head: NONE,
                 next_tail: NONE,
-                strip_end: (y0 + rows) as i32,
-                bits,
+                carry_below: raster::row_center((y0 + rows) as i32, bits),
             };
             // The draw call of the next triangle, and where the next one
             // starts.
