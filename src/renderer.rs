@@ -933,6 +933,7 @@ where
                 old: carried as u32,
                 next_head: NONE,
                 next_tail: NONE,
+                // (At most `MAX_SIZE` rows: within `row_center`'s range.)
                 carry_below: raster::row_center((y0 + rows) as i32, bits),
             };
             // The draw call of the next triangle, and where the next one
