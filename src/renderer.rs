@@ -196,19 +196,25 @@ pub struct StripQueue<'q, const V: usize> {
 }
 
 impl<const V: usize> StripQueue<'_, V> {
-    /// Index of the next triangle, `NONE` when there is none.
+    /// Index of the next triangle, `NONE` when there is none: the two
+    /// lists merged by index (an empty list's head, `NONE`, is above every
+    /// index).
+    #[inline(always)]
+    fn head(&self) -> u32 {
+        self.fresh.min(self.old)
+    }
+
+    /// [`StripQueue::head`] as stored.
     #[inline(always)]
     fn peek(&self) -> u16 {
-        self.fresh.min(self.old) as u16
+        self.head() as u16
     }
 
     /// The next triangle's vertices and face color, if its index is below
     /// `end`.
     #[inline(always)]
     fn pop_before(&mut self, end: u16) -> Option<([&ScreenVertex<V>; 3], [u8; 3])> {
-        // Merge the two lists by index (an empty list's head, NONE, is
-        // above every index).
-        let i = self.fresh.min(self.old);
+        let i = self.head();
         if i >= end as u32 {
             return None;
         }
