@@ -42,4 +42,5 @@ firmware_board() {
 
 firmware_board rp2040-st7789 thumbv6m-none-eabi
 firmware_board stm32f4-ili9341 thumbv7em-none-eabihf
+firmware_board rp2350-st7789 thumbv8m.main-none-eabihf
 unset -f firmware_board

@@ -1,0 +1,135 @@
+//! soft3d's demo scene on a Raspberry Pi Pico 2 (RP2350, Cortex-M33 with
+//! FPU at 150 MHz) driving an ST7789 320×240 display over SPI, in `f32`.
+//!
+//! The firmware only sets up the clocks, the SPI bus, the display and the
+//! loop; everything drawn comes from `soft3d::scenes::draw_demo`. Each frame
+//! is rendered in 16-row strips, each strip sent with one `fill_contiguous`,
+//! and the frame time, measured with the RP2350's 1 MHz timer, is printed
+//! over RTT. The display and its pins are those of the RP2040 firmware (a
+//! Pico 2 fits the same plug-in board). Wiring, building and flashing:
+//! `docs/boards.md`.
+#![no_std]
+#![no_main]
+#![deny(unsafe_code)]
+
+use embedded_graphics::pixelcolor::Rgb565;
+use embedded_graphics::prelude::*;
+use embedded_hal::digital::{OutputPin, PinState};
+use embedded_hal::spi::MODE_0;
+use embedded_hal_bus::spi::ExclusiveDevice;
+use mipidsi::interface::SpiInterface;
+use mipidsi::models::ST7789;
+use mipidsi::options::{ColorInversion, Orientation, Rotation};
+use rp235x_hal::fugit::RateExtU32;
+use rp235x_hal::gpio::{FunctionSpi, Pins};
+use rp235x_hal::{self as hal, pac, Clock};
+use rtt_target::{rprintln, rtt_init_print};
+use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
+use soft3d::{FloatingPoint, Renderer};
+use static_cell::ConstStaticCell;
+
+/// The block that tells the RP2350's boot ROM this is an Arm executable
+/// to run in secure mode. The ROM looks for it in the first 4 KB of flash:
+/// memory.x puts section `.start_block` right after the vector table.
+// The `unsafe_code` lint covers `link_section`; there is no other way to
+// put the block where the ROM looks for it.
+#[allow(unsafe_code)]
+#[link_section = ".start_block"]
+#[used]
+pub static IMAGE_DEF: hal::block::ImageDef = hal::block::ImageDef::secure_exe();
+
+/// The Pico 2's crystal.
+const XOSC_HZ: u32 = 12_000_000;
+/// SPI clock: the peripheral clock (150 MHz) / 2, the RP2350's maximum.
+/// That is above the 62.5 MHz of the ST7789's datasheet, which modules
+/// commonly take with short wires; the next step down is 37.5 MHz, for a
+/// garbled picture.
+const SPI_HZ: u32 = 75_000_000;
+
+/// Display size in landscape, and rows rendered at a time.
+const W: usize = 320;
+const H: usize = 240;
+const STRIP: usize = 16;
+
+type DemoRenderer = Renderer<Rgb565, W, H, STRIP, DEMO_VERTICES, DEMO_TRIANGLES, DEMO_VARYINGS, FloatingPoint>;
+
+/// The renderer's buffers (82 KB), built at compile time (`Renderer::new`
+/// is a `const fn`) so that they never pass through the stack. A renderer
+/// with a black fill is all zeros, so it sits in `.bss`: no flash image,
+/// nothing copied at startup.
+static RENDERER: ConstStaticCell<DemoRenderer> = ConstStaticCell::new(Renderer::new(Rgb565::BLACK));
+
+// (hal::entry also turns the FPU on before `main`.)
+#[hal::entry]
+fn main() -> ! {
+    rtt_init_print!();
+    let mut pac = pac::Peripherals::take().unwrap();
+    let mut watchdog = hal::Watchdog::new(pac.WATCHDOG);
+    let clocks =
+        hal::clocks::init_clocks_and_plls(XOSC_HZ, pac.XOSC, pac.CLOCKS, pac.PLL_SYS, pac.PLL_USB, &mut pac.RESETS, &mut watchdog).unwrap();
+    let mut timer = hal::Timer::new_timer0(pac.TIMER0, &mut pac.RESETS, &clocks);
+    let sio = hal::Sio::new(pac.SIO);
+    let pins = Pins::new(pac.IO_BANK0, pac.PADS_BANK0, sio.gpio_bank0, &mut pac.RESETS);
+
+    // SPI1 on GP10 (SCK) and GP11 (MOSI); CS, DC, RST and the backlight on
+    // plain outputs (the pinout of Waveshare's Pico-LCD-2 plug-in board).
+    let sck = pins.gpio10.into_function::<FunctionSpi>();
+    let mosi = pins.gpio11.into_function::<FunctionSpi>();
+    let cs = pins.gpio9.into_push_pull_output_in_state(PinState::High);
+    let dc = pins.gpio8.into_push_pull_output();
+    let rst = pins.gpio12.into_push_pull_output_in_state(PinState::High);
+    let mut backlight = pins.gpio13.into_push_pull_output_in_state(PinState::Low);
+    let spi = hal::Spi::<_, _, _, 8>::new(pac.SPI1, (mosi, sck)).init(&mut pac.RESETS, clocks.peripheral_clock.freq(), SPI_HZ.Hz(), MODE_0);
+    let spi = ExclusiveDevice::new_no_delay(spi, cs).unwrap();
+    let mut spi_buffer = [0u8; 1024];
+    let interface = SpiInterface::new(spi, dc, &mut spi_buffer);
+    let mut display = mipidsi::Builder::new(ST7789, interface)
+        .reset_pin(rst)
+        // IPS ST7789 panels show inverted colors without this.
+        .invert_colors(ColorInversion::Inverted)
+        .orientation(Orientation::new().rotate(Rotation::Deg90))
+        .init(&mut timer)
+        .unwrap();
+    display.clear(Rgb565::BLACK).unwrap();
+    backlight.set_high().unwrap();
+
+    let renderer = RENDERER.take();
+    let (camera, lights) = (demo_camera(), demo_lights());
+    let mhz = clocks.system_clock.freq().to_MHz();
+    rprintln!("soft3d demo: RP2350 + ST7789 {}x{}, {}-row strips, f32, {} MHz", W, H, STRIP, mhz);
+    let start = timer.get_counter();
+    let mut n: u32 = 0;
+    loop {
+        let t0 = timer.get_counter();
+        let seconds = (t0 - start).to_micros() as f32 * 1e-6;
+        let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
+        // The demo's DEMO_VERTICES/DEMO_TRIANGLES budget always fits it.
+        if let Err(e) = draw_demo(&mut frame, seconds) {
+            rprintln!("draw_demo: {:?}", e);
+        }
+        let t1 = timer.get_counter();
+        let stats = frame.finish(&mut display).unwrap();
+        let t2 = timer.get_counter();
+        let (geometry, total) = ((t1 - t0).to_micros() as u32, (t2 - t0).to_micros() as u32);
+        let tenths_fps = 10_000_000 / total.max(1);
+        rprintln!(
+            "frame {}: {} us (geometry {} us, raster + SPI {} us), {}.{} fps, {} triangles",
+            n,
+            total,
+            geometry,
+            total - geometry,
+            tenths_fps / 10,
+            tenths_fps % 10,
+            stats.queued
+        );
+        n = n.wrapping_add(1);
+    }
+}
+
+#[panic_handler]
+fn panic(info: &core::panic::PanicInfo) -> ! {
+    rprintln!("panic: {}", info);
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
