@@ -15,8 +15,8 @@ use common::golden;
 use soft3d::material::DepthOff;
 use soft3d::math::{Mat4, Vec3};
 use soft3d::mesh::{Mesh, MeshData};
-use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES, SPHERE, TORUS};
-use soft3d::{Camera, Cull, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, Renderer, Settings};
+use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DemoLoop, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES, SPHERE, TORUS};
+use soft3d::{Camera, Cull, DrawError, FixedPoint, FloatingPoint, HostRenderer, Lights, Material, Renderer, Settings};
 
 fn demo_image<S: Settings>(w: usize, h: usize, strip: usize, t: f32) -> Image<Rgb565> {
     let mut r: HostRenderer<Rgb565, DEMO_VARYINGS, S> =
@@ -303,4 +303,119 @@ fn flat_faces_are_lit_only_for_the_triangles_queued() {
     // The frame is `Flat`'s.
     let (_, _, flat) = cube_from_a_corner(Flat);
     assert!(counted == flat);
+}
+
+/// A clock that returns the given readings in turn.
+fn clock(readings: &[u32]) -> impl FnMut() -> u32 + '_ {
+    let mut next = readings.iter();
+    move || *next.next().expect("the loop read the clock more often than expected")
+}
+
+fn demo_renderer(w: usize, h: usize, vertices: usize) -> HostRenderer<Rgb565, DEMO_VARYINGS, FixedPoint> {
+    HostRenderer::new(w, h, 16, vertices, DEMO_TRIANGLES, Rgb565::BLACK).unwrap()
+}
+
+#[test]
+fn demo_loop_times_each_frame_and_animates_by_the_measured_time() {
+    let mut r = demo_renderer(160, 120, DEMO_VERTICES);
+    let mut demo = DemoLoop::new(1_000_000);
+    let background = Rgb565::new(2, 4, 6);
+    // Frame 0: 2 ms of draw calls, 10 ms in all.
+    let mut img = Image::new(160, 120, Rgb565::BLACK);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), background);
+    let report = demo.render(frame, &mut img, clock(&[1_000, 3_000, 11_000])).unwrap();
+    assert_eq!(img, demo_image::<FixedPoint>(160, 120, 16, 0.0), "frame 0 is the demo at t = 0");
+    assert!(report.stats.queued > 500, "{:?}", report.stats);
+    assert_eq!((report.index, report.geometry_ticks, report.total_ticks, report.draw_error), (0, 2_000, 10_000, None));
+    assert_eq!(
+        report.to_string(),
+        format!("frame 0: 10000 us (geometry 2000 us, raster + display 8000 us), 100.0 fps, {} triangles", report.stats.queued)
+    );
+    assert_eq!(demo.seconds(), 0.01);
+
+    // Frame 1 is drawn at the 10 ms frame 0 took, across the clock's wrap.
+    let mut img = Image::new(160, 120, Rgb565::BLACK);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), background);
+    let report = demo.render(frame, &mut img, clock(&[u32::MAX - 499, 1_500, 40_000])).unwrap();
+    assert_eq!(img, demo_image::<FixedPoint>(160, 120, 16, 0.01), "frame 1 is the demo at t = 0.01 s");
+    assert_ne!(img, demo_image::<FixedPoint>(160, 120, 16, 0.0), "the scene moved");
+    assert_eq!((report.index, report.geometry_ticks, report.total_ticks), (1, 2_000, 40_500));
+    assert_eq!(
+        report.to_string(),
+        format!("frame 1: 40500 us (geometry 2000 us, raster + display 38500 us), 24.6 fps, {} triangles", report.stats.queued)
+    );
+    assert_eq!(demo.seconds(), 0.0505);
+}
+
+#[test]
+fn demo_loop_reports_a_cycle_counter_in_microseconds_and_ticks() {
+    let mut r = demo_renderer(64, 48, DEMO_VERTICES);
+    // A 100 MHz cycle counter: 4,000,000 cycles are 40 ms.
+    let mut demo = DemoLoop::new(100_000_000);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
+    let report = demo.render(frame, &mut Image::new(64, 48, Rgb565::BLACK), clock(&[0, 1_234_567, 4_000_000])).unwrap();
+    assert_eq!((report.micros(report.geometry_ticks), report.micros(report.total_ticks), report.tenths_fps()), (12_345, 40_000, 250));
+    assert_eq!(
+        report.to_string(),
+        format!(
+            "frame 0: 40000 us = 4000000 ticks (geometry 12345 us, raster + display 27655 us), 25.0 fps, {} triangles",
+            report.stats.queued
+        )
+    );
+    assert_eq!(demo.seconds(), 0.04);
+    // A clock of 0 ticks a second is taken as 1, and a frame of 0 ticks as 1.
+    let mut demo = DemoLoop::new(0);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
+    let report = demo.render(frame, &mut Image::new(64, 48, Rgb565::BLACK), clock(&[7, 7, 7])).unwrap();
+    assert_eq!((report.ticks_per_second, report.total_ticks, report.tenths_fps()), (1, 0, 10));
+    assert_eq!(demo.seconds(), 0.0);
+}
+
+#[test]
+fn demo_loop_sends_the_frame_and_reports_a_failed_draw_call() {
+    // Room for 100 vertices: the torus (561) does not fit, and draw_demo
+    // stops at its first draw call.
+    let mut r = demo_renderer(64, 48, 100);
+    let mut demo = DemoLoop::new(1_000_000);
+    let mut img = Image::new(64, 48, Rgb565::RED);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLUE);
+    let report = demo.render(frame, &mut img, clock(&[0, 10, 30])).unwrap();
+    assert_eq!(report.draw_error, Some(DrawError::VertexCapacity { needed: 561, capacity: 100 }));
+    assert_eq!(report.stats.queued, 0);
+    let background = (0..48).flat_map(|y| (0..64).map(move |x| (x, y))).filter(|&(x, y)| img.get(x, y) == Rgb565::BLUE).count();
+    assert_eq!(background, 64 * 48, "the frame was still sent, empty");
+    assert_eq!(
+        report.to_string(),
+        "frame 0: 30 us (geometry 10 us, raster + display 20 us), 33333.3 fps, 0 triangles; \
+         draw_demo: vertex buffer too small: frame needs 561 vertices, capacity is 100"
+    );
+}
+
+/// A display whose every write fails.
+struct BrokenDisplay;
+
+impl embedded_graphics::geometry::OriginDimensions for BrokenDisplay {
+    fn size(&self) -> embedded_graphics::geometry::Size {
+        embedded_graphics::geometry::Size::new(64, 48)
+    }
+}
+
+impl embedded_graphics::draw_target::DrawTarget for BrokenDisplay {
+    type Color = Rgb565;
+    type Error = &'static str;
+    fn draw_iter<I: IntoIterator<Item = embedded_graphics::Pixel<Rgb565>>>(&mut self, _: I) -> Result<(), &'static str> {
+        Err("bus error")
+    }
+}
+
+#[test]
+fn demo_loop_passes_on_the_display_error_without_counting_the_frame() {
+    let mut r = demo_renderer(64, 48, DEMO_VERTICES);
+    let mut demo = DemoLoop::new(1_000_000);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
+    assert_eq!(demo.render(frame, &mut BrokenDisplay, clock(&[0, 10])), Err("bus error"));
+    assert_eq!(demo.seconds(), 0.0);
+    let frame = r.begin_frame(&demo_camera(), &demo_lights(), Rgb565::BLACK);
+    let report = demo.render(frame, &mut Image::new(64, 48, Rgb565::BLACK), clock(&[0, 10, 20])).unwrap();
+    assert_eq!(report.index, 0, "the failed frame is not numbered");
 }

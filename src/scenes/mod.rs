@@ -29,8 +29,11 @@ pub mod crate_scene {
     include!("crate_scene.rs");
 }
 
+mod demo_loop;
 pub mod study;
 pub mod wall;
+
+pub use demo_loop::{DemoFrameReport, DemoLoop};
 
 static TORUS_DATA: MeshData<{ torus_vertex_count(32, 16) }, { torus_index_count(32, 16) }> = MeshData::torus(32, 16, 1.0, 0.4);
 static SPHERE_DATA: MeshData<{ sphere_vertex_count(24, 16) }, { sphere_index_count(24, 16) }> = MeshData::uv_sphere(24, 16, 0.8);

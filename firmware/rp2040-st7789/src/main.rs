@@ -2,8 +2,8 @@
 //! 125 MHz, no FPU) driving an ST7789 320×240 display over SPI, in fixed
 //! point.
 //!
-//! The firmware only sets up the clocks, the SPI bus, the display and the
-//! loop; everything drawn comes from `soft3d::scenes::draw_demo`. Each frame
+//! The firmware only sets up the clocks, the SPI bus and the display; the
+//! frame loop is `soft3d::scenes::DemoLoop`, tested on the host. Each frame
 //! is rendered in 16-row strips, each strip sent with one `fill_contiguous`,
 //! and the frame time, measured with the RP2040's 1 MHz timer, is printed
 //! over RTT. Wiring, building and flashing: `docs/boards.md`.
@@ -23,7 +23,7 @@ use rp2040_hal::fugit::RateExtU32;
 use rp2040_hal::gpio::{FunctionSpi, Pins};
 use rp2040_hal::{self as hal, pac, Clock};
 use rtt_target::{rprintln, rtt_init_print};
-use soft3d::scenes::{demo_camera, demo_lights, draw_demo, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
+use soft3d::scenes::{demo_camera, demo_lights, DemoLoop, DEMO_TRIANGLES, DEMO_VARYINGS, DEMO_VERTICES};
 use soft3d::{FixedPoint, Renderer};
 use static_cell::ConstStaticCell;
 
@@ -93,32 +93,15 @@ fn main() -> ! {
     let renderer = RENDERER.take();
     let (camera, lights) = (demo_camera(), demo_lights());
     rprintln!("soft3d demo: RP2040 + ST7789 {}x{}, {}-row strips, fixed point", W, H, STRIP);
-    let start = timer.get_counter();
-    let mut n: u32 = 0;
+    // The timer counts microseconds; its low 32 bits wrap after 71 minutes,
+    // which the loop's differences allow for.
+    let mut demo = DemoLoop::new(1_000_000);
     loop {
-        let t0 = timer.get_counter();
-        let seconds = (t0 - start).to_micros() as f32 * 1e-6;
-        let mut frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
-        // The demo's DEMO_VERTICES/DEMO_TRIANGLES budget always fits it.
-        if let Err(e) = draw_demo(&mut frame, seconds) {
-            rprintln!("draw_demo: {:?}", e);
+        let frame = renderer.begin_frame(&camera, &lights, Rgb565::BLACK);
+        match demo.render(frame, &mut display, || timer.get_counter().ticks() as u32) {
+            Ok(report) => rprintln!("{}", report),
+            Err(e) => rprintln!("display: {:?}", e),
         }
-        let t1 = timer.get_counter();
-        let stats = frame.finish(&mut display).unwrap();
-        let t2 = timer.get_counter();
-        let (geometry, total) = ((t1 - t0).to_micros() as u32, (t2 - t0).to_micros() as u32);
-        let tenths_fps = 10_000_000 / total.max(1);
-        rprintln!(
-            "frame {}: {} us (geometry {} us, raster + SPI {} us), {}.{} fps, {} triangles",
-            n,
-            total,
-            geometry,
-            total - geometry,
-            tenths_fps / 10,
-            tenths_fps % 10,
-            stats.queued
-        );
-        n = n.wrapping_add(1);
     }
 }
 
