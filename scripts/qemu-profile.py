@@ -7,7 +7,7 @@
     scripts/qemu-profile.py MACHINE ELF --annotate SYMBOL-SUBSTRING       # disassembly with executions per instruction
     scripts/qemu-profile.py MACHINE ELF --by-count SYMBOL-SUBSTRING       # instructions grouped by how often each ran
 
-Runs ELF under qemu-system-arm -machine MACHINE (mps2-an386 or mps2-an385)
+Runs ELF under qemu-system-arm -machine MACHINE (mps2-an386, mps2-an385 or mps2-an505)
 with -d in_asm,exec,nochain, which logs every translated block (its
 instructions) and every block executed. Executions times block sizes,
 summed per symbol, give exact instruction counts per function (after
@@ -30,7 +30,7 @@ if lines_mode or annotate or by_count:
     del sys.argv[3]
 arg = sys.argv[3] if len(sys.argv) > 3 else "25"
 top = int(arg) if arg.isdigit() else None
-cpu = "cortex-m4" if machine == "mps2-an386" else "cortex-m3"
+cpu = {"mps2-an386": "cortex-m4", "mps2-an505": "cortex-m33"}.get(machine, "cortex-m3")
 with tempfile.TemporaryDirectory() as d:
     log = os.path.join(d, "q.log")
     subprocess.run(["qemu-system-arm", "-machine", machine, "-cpu", cpu, "-nographic", "-semihosting-config",

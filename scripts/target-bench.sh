@@ -6,12 +6,15 @@
 #   scripts/target-bench.sh --csv      # scene,mode,target,instr_per_frame,instr_per_pixel,crc,host_crc,static_ram,stack,flash
 #   scripts/target-bench.sh --readme   # rewrites the table in README.md
 #
-# Targets: thumbv7em-none-eabihf on QEMU mps2-an386 (Cortex-M4F) and
+# Targets: thumbv7em-none-eabihf on QEMU mps2-an386 (Cortex-M4F),
 # thumbv6m-none-eabi on mps2-an385 (a Cortex-M3 running M0+ code: the
-# stand-in for an RP2040). With -icount shift=0 each instruction is 1 ns of
-# virtual time and SysTick (25 MHz) ticks every 40 instructions (the
-# firmware measures this factor on a loop of known length and the script
-# fails if it is not 40).
+# stand-in for an RP2040) and thumbv8m.main-none-eabihf on mps2-an505
+# (Cortex-M33, the RP2350's core). With -icount shift=0 each instruction is
+# 1 ns of virtual time and SysTick ticks every 40 instructions (25 MHz on
+# the an385 and an386) or 50 (20 MHz on the an505); the firmware measures
+# this factor on a loop of known length and the script fails if it is not
+# the one assumed. The README's table has the M4F and M0+ rows; the M33's
+# are compared with the M4F's in a table of their own.
 #
 # Columns: instr_per_frame is everything the renderer does for a frame
 # (strip clears and handing strips to the DrawTarget included) minus the
@@ -36,15 +39,19 @@ done
 host=$(cargo run -q --release --example bench_host --features simulator)
 rows=""
 declare -A flash
-for t in thumbv7em-none-eabihf thumbv6m-none-eabi; do
+for t in thumbv7em-none-eabihf thumbv6m-none-eabi thumbv8m.main-none-eabihf; do
   (cd firmware/qemu-bench && ../../scripts/fw-cargo.sh "$t" build -q --release)
   out=$(cd firmware/qemu-bench && timeout 600 ../../scripts/fw-cargo.sh "$t" run -q --release)
+  case $t in
+    thumbv6m-none-eabi) core=m0 per_tick=40 ;;
+    thumbv8m.main-none-eabihf) core=m33 per_tick=50 ;;
+    *) core=m4f per_tick=40 ;;
+  esac
   cal=$(grep '^calibration,' <<<"$out")
-  if [ "$(cut -d, -f3 <<<"$cal")" != 40 ]; then
-    echo "instructions per tick calibration is not 40: $cal" >&2
+  if [ "$(cut -d, -f3 <<<"$cal")" != "$per_tick" ]; then
+    echo "$core: instructions per tick calibration is not $per_tick: $cal" >&2
     exit 1
   fi
-  core=$([ "$t" = thumbv6m-none-eabi ] && echo m0 || echo m4f)
   elf=firmware/qemu-bench/target/$t/release/soft3d-qemu-bench
   # Where scripts/fw-cargo.sh put it when it built `core` itself.
   if [ "${SOFT3D_BUILD_STD:-0}" = 1 ] || ! grep -qx "$t" <<<"$(rustup target list --installed 2>/dev/null || true)"; then
@@ -82,7 +89,7 @@ while IFS=, read -r scene mode core instr sink queued crc geometry stack ram; do
   pixels["$scene"]=$drawn
   per_px=$([ "$drawn" -gt 0 ] && awk -v n="$render" -v p="$drawn" 'BEGIN { printf "%.1f", n / p }' || echo "n/a")
   fps=$(awk -v n="$render" 'BEGIN { printf "%.1f", 150000000 / n }')
-  md+="| $scene | $mode | $core | $(commas "$render") | $per_px | $(commas "$geometry") | $(commas "$drawn") | $queued | $fps | $(commas "$ram") | $(commas "$stack") |"$'\n'
+  [ "$core" = m33 ] || md+="| $scene | $mode | $core | $(commas "$render") | $per_px | $(commas "$geometry") | $(commas "$drawn") | $queued | $fps | $(commas "$ram") | $(commas "$stack") |"$'\n'
   if [ "$mode_arg" = "--csv" ]; then
     echo "$scene,$mode,$core,$render,$per_px,$crc,$want,$ram,$stack,${flash[$core]}"
   else
@@ -109,7 +116,21 @@ for scene in $(cut -d, -f1 <<<"$rows" | grep '^wall-' | awk '!seen[$0]++'); do
   done
   effects_md+="$line"$'\n'
 done
+# The M33 (RP2350 code) against the M4F, scene by scene.
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a != "" && b > 0) printf "%.3f", a / b; else printf "n/a" }'; }
+m33_md="| scene | fixed M33 | M33 / M4F | f32 M33 | M33 / M4F |"$'\n'"| --- | ---: | ---: | ---: | ---: |"$'\n'
+for scene in $(cut -d, -f1 <<<"$rows" | awk 'NF && !seen[$0]++'); do
+  line="| $scene |"
+  for mode in fixed f32; do
+    a=${rendered[$scene,$mode,m33]:-} b=${rendered[$scene,$mode,m4f]:-}
+    line+=" $([ -n "$a" ] && commas "$a" || echo n/a) | $(ratio "$a" "$b") |"
+  done
+  m33_md+="$line"$'\n'
+done
 if [ -z "$mode_arg" ]; then
+  echo
+  echo "Cortex-M33 (mps2-an505) against the M4F, instructions per frame:"
+  printf '%s' "$m33_md"
   echo
   echo "Instructions per pixel by effect, (wall frame - empty frame) / 76,800:"
   printf '%s' "$effects_md"
@@ -118,7 +139,8 @@ if [ "$mode_arg" = "--readme" ]; then
   # Replace the lines between the two markers with the new table.
   table="| scene | mode | core | instructions / frame | per pixel drawn | of which geometry | pixels drawn | triangles drawn | fps at 150 MHz (estimate) | renderer RAM | peak stack |"$'\n'
   table+="| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"$'\n'"$md"
-  table+=$'\n'"Benchmark firmware flash: $(commas "${flash[m4f]}") bytes (M4F), $(commas "${flash[m0]}") bytes (M0+ code)."$'\n'
+  table+=$'\n'"Benchmark firmware flash: $(commas "${flash[m4f]}") bytes (M4F), $(commas "${flash[m0]}") bytes (M0+ code), $(commas "${flash[m33]}") bytes (M33)."$'\n'
+  table+=$'\n'"The same frames on the Cortex-M33 (\`thumbv8m.main-none-eabihf\`, the RP2350's code, on QEMU \`mps2-an505\`), every checksum equal to the host's, against the M4F's instructions per frame:"$'\n\n'"$m33_md"
   table+=$'\n'"Instructions per pixel by effect: each \`wall-*\` frame minus the \`empty\` frame (clears and strip hand-off), over its 76,800 pixels:"$'\n\n'"$effects_md"
   awk -v table="$table" '
     /<!-- target-bench:begin -->/ { print; printf "%s", table; skip = 1; next }

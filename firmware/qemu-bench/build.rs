@@ -1,14 +1,25 @@
-//! Puts memory.x where the linker finds it, and bakes the shared Blender
-//! exports (when `../shared/assets` is there) into Rust statics with
-//! `tools/bake`, so the benchmark draws them from flash exactly as the host
-//! parses them.
+//! Puts the emulated board's memory map where the linker finds it, as
+//! memory.x, and bakes the shared Blender exports (when `../shared/assets`
+//! is there) into Rust statics with `tools/bake`, so the benchmark draws
+//! them from flash exactly as the host parses them.
 use std::path::{Path, PathBuf};
 
 fn main() {
     let out = PathBuf::from(std::env::var_os("OUT_DIR").unwrap());
-    std::fs::copy("memory.x", out.join("memory.x")).unwrap();
+    // The ARMv8-M build runs on mps2-an505, whose memory map and SysTick
+    // clock (20 MHz) differ from the an385's and an386's.
+    let an505 = std::env::var("TARGET").is_ok_and(|t| t.starts_with("thumbv8m"));
+    // Not named memory.x here: the linker looks in the crate's directory
+    // before the search path.
+    let memory = if an505 { "memory-an505.x" } else { "memory-mps2.x" };
+    std::fs::copy(memory, out.join("memory.x")).unwrap();
     println!("cargo:rustc-link-search={}", out.display());
-    println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=memory-mps2.x");
+    println!("cargo:rerun-if-changed=memory-an505.x");
+    println!("cargo::rustc-check-cfg=cfg(soft3d_an505)");
+    if an505 {
+        println!("cargo:rustc-cfg=soft3d_an505");
+    }
     println!("cargo:rerun-if-env-changed=SOFT3D_BENCH_ONLY");
     println!("cargo:rerun-if-env-changed=SOFT3D_STUDY_ONLY");
     println!("cargo::rustc-check-cfg=cfg(soft3d_assets)");

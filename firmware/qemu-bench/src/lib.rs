@@ -42,8 +42,14 @@ pub fn file_scene(
     }
 }
 
-/// Instructions per SysTick tick under `-icount shift=0` at 25 MHz.
+/// Instructions per SysTick tick under `-icount shift=0` (1 ns an
+/// instruction): SysTick runs at 25 MHz on mps2-an385 and mps2-an386.
+#[cfg(not(soft3d_an505))]
 pub const INSTRUCTIONS_PER_TICK: u32 = 40;
+/// Instructions per SysTick tick under `-icount shift=0` (1 ns an
+/// instruction): SysTick runs at 20 MHz on mps2-an505.
+#[cfg(soft3d_an505)]
+pub const INSTRUCTIONS_PER_TICK: u32 = 50;
 
 pub struct Timer(pub cortex_m::peripheral::SYST);
 
@@ -80,7 +86,13 @@ impl Timer {
     }
 }
 
-pub const TARGET: &str = if cfg!(target_abi = "eabihf") { "m4f" } else { "m0" };
+pub const TARGET: &str = if cfg!(soft3d_an505) {
+    "m33"
+} else if cfg!(target_abi = "eabihf") {
+    "m4f"
+} else {
+    "m0"
+};
 
 /// Stack painting: the pattern written below the stack pointer before a
 /// frame, and how far below it is checked.
