@@ -68,7 +68,8 @@ pub struct DemoFrameReport {
     /// The renderer's counts for the frame.
     pub stats: FrameStats,
     /// A draw call's error, if one failed: the frame was still finished
-    /// and sent, without that mesh (or what did not fit of it).
+    /// and sent, without the meshes from that draw call on (`draw_demo`
+    /// stops at the first error).
     pub draw_error: Option<DrawError>,
 }
 
