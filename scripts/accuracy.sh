@@ -51,7 +51,15 @@ for t in thumbv7em-none-eabihf thumbv6m-none-eabi; do
     grep '^study,' <<<"$out" | cut -d, -f2- >>"$csv"
   done
   (cd firmware/qemu-bench && cargo build -q --release --target "$t" --bin mathfns)
-  run "$t" mathfns | grep '^mathfn,' | cut -d, -f2- >>"$calls"
+  out=$(run "$t" mathfns)
+  # soft3d's square root (the FPU's on the M4F) against libm's, bit for bit.
+  check=$(grep '^mathcheck,sqrt,' <<<"$out" || true)
+  if [ -z "$check" ] || [ "$(cut -d, -f5 <<<"$check")" != 0 ]; then
+    echo "accuracy: soft3d's sqrt differs from libm's on $t: ${check:-no mathcheck line}" >&2
+    exit 1
+  fi
+  echo "$check"
+  grep '^mathfn,' <<<"$out" | cut -d, -f2- >>"$calls"
 done
 # The host's micromath renders (errors and checksums of the twins).
 cargo run -q --release --manifest-path tools/accuracy/Cargo.toml --no-default-features --features micromath -- \

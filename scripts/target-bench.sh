@@ -43,13 +43,15 @@ for t in thumbv7em-none-eabihf thumbv6m-none-eabi thumbv8m.main-none-eabihf; do
   (cd firmware/qemu-bench && ../../scripts/fw-cargo.sh "$t" build -q --release)
   out=$(cd firmware/qemu-bench && timeout 600 ../../scripts/fw-cargo.sh "$t" run -q --release)
   case $t in
-    thumbv6m-none-eabi) core=m0 per_tick=40 ;;
-    thumbv8m.main-none-eabihf) core=m33 per_tick=50 ;;
-    *) core=m4f per_tick=40 ;;
+    thumbv6m-none-eabi) core=m0 ;;
+    thumbv8m.main-none-eabihf) core=m33 ;;
+    *) core=m4f ;;
   esac
-  cal=$(grep '^calibration,' <<<"$out")
-  if [ "$(cut -d, -f3 <<<"$cal")" != "$per_tick" ]; then
-    echo "$core: instructions per tick calibration is not $per_tick: $cal" >&2
+  # `calibration,instructions_per_tick,MEASURED,assumed,ASSUMED`: the
+  # firmware's counts hold only if the two agree.
+  cal=$(grep '^calibration,' <<<"$out" || true)
+  if [ -z "$cal" ] || [ "$(cut -d, -f3 <<<"$cal")" != "$(cut -d, -f5 <<<"$cal")" ]; then
+    echo "$core: instructions per tick calibration differs from the factor the firmware assumes: ${cal:-no calibration line}" >&2
     exit 1
   fi
   elf=firmware/qemu-bench/target/$t/release/soft3d-qemu-bench

@@ -3,15 +3,61 @@
 //! `libm` (feature `libm`, the default) is accurate to within an ulp or so;
 //! `micromath` (feature `micromath`, used only when `libm` is off) trades
 //! accuracy for speed. Both are plain Rust, so host and target compute the
-//! same bits for the same backend.
+//! same bits for the same backend. One exception, with the same bits: on
+//! Arm cores with an FPU (`eabihf` targets) libm's square root is the FPU's
+//! own instruction, where libm would run about 50 instructions of integer
+//! code (it has no Arm path; `core` has no stable `f32::sqrt`).
 
 #[cfg(not(any(feature = "libm", feature = "micromath")))]
 compile_error!("soft3d needs a math backend: enable the `libm` (default) or `micromath` feature");
 
 /// Square root. Negative inputs give NaN (callers clamp first).
-#[inline]
+///
+/// Out of line where it is the FPU's instruction: its callers run per draw
+/// call or per vertex, and inlined there it cost `draw_mesh` more (its
+/// registers) than the call it saved: `torus.babylon` `f32` M4F +0.3%.
+#[cfg_attr(all(feature = "libm", target_arch = "arm", target_abi = "eabihf"), inline(never))]
+#[cfg_attr(not(all(feature = "libm", target_arch = "arm", target_abi = "eabihf")), inline)]
 pub fn sqrt(x: f32) -> f32 {
+    root(x)
+}
+
+/// Inverse square root, `1 / sqrt(x)`: normalizing vectors. With
+/// `micromath`, its one-step bit trick (a few percent off, no division).
+#[inline]
+pub fn rsqrt(x: f32) -> f32 {
     #[cfg(feature = "libm")]
+    {
+        1.0 / sqrt(x)
+    }
+    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
+    {
+        micromath::F32Ext::invsqrt(x)
+    }
+}
+
+/// [`rsqrt`] with the root always inlined: the per-pixel normalizations of
+/// `f32` Phong, where a call would cost as much as the FPU's root itself.
+#[inline(always)]
+pub(crate) fn rsqrt_inline(x: f32) -> f32 {
+    #[cfg(feature = "libm")]
+    {
+        1.0 / root(x)
+    }
+    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
+    {
+        micromath::F32Ext::invsqrt(x)
+    }
+}
+
+/// The backend's square root.
+#[inline(always)]
+fn root(x: f32) -> f32 {
+    #[cfg(all(feature = "libm", target_arch = "arm", target_abi = "eabihf"))]
+    {
+        fpu_sqrt(x)
+    }
+    #[cfg(all(feature = "libm", not(all(target_arch = "arm", target_abi = "eabihf"))))]
     {
         libm::sqrtf(x)
     }
@@ -21,18 +67,37 @@ pub fn sqrt(x: f32) -> f32 {
     }
 }
 
-/// Inverse square root, `1 / sqrt(x)`: normalizing vectors. With
-/// `micromath`, its one-step bit trick (a few percent off, no division).
-#[inline]
-pub fn rsqrt(x: f32) -> f32 {
-    #[cfg(feature = "libm")]
-    {
-        1.0 / libm::sqrtf(x)
+/// The FPU's square root, `vsqrt.f32`: correctly rounded, as IEEE 754 and
+/// libm's `sqrtf` are, so the bits equal the host's (the emulated benchmark's
+/// Phong frames and `firmware/qemu-bench/src/bin/mathfns.rs` check it).
+///
+/// The operand goes through `s0`, saved in a core register and restored: the
+/// single-precision register class needs the `vfp2` target feature, which
+/// Rust ties to double precision, so `asm!` cannot allocate an `s` register
+/// on a Cortex-M4F or M33.
+#[cfg(all(feature = "libm", target_arch = "arm", target_abi = "eabihf"))]
+#[allow(unsafe_code)]
+#[inline(always)]
+fn fpu_sqrt(x: f32) -> f32 {
+    let root: f32;
+    // SAFETY: every `eabihf` target has a VFP unit with `vsqrt.f32`. The
+    // block writes only its three core registers and `s0`, which it puts
+    // back; no memory, no stack, and not the flags (`vsqrt` sets only the
+    // FPU's cumulative exception bits).
+    unsafe {
+        core::arch::asm!(
+            "vmov {saved}, s0",
+            "vmov s0, {x}",
+            "vsqrt.f32 s0, s0",
+            "vmov {root}, s0",
+            "vmov s0, {saved}",
+            x = in(reg) x,
+            root = lateout(reg) root,
+            saved = out(reg) _,
+            options(pure, nomem, nostack, preserves_flags),
+        );
     }
-    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
-    {
-        micromath::F32Ext::invsqrt(x)
-    }
+    root
 }
 
 /// Sine of an angle in radians.

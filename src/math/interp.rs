@@ -376,7 +376,7 @@ impl Interp for f32 {
     #[inline]
     fn rsqrt(self) -> Self {
         if self > 1e-30 {
-            super::rsqrt(self)
+            super::elementary::rsqrt_inline(self)
         } else {
             0.0
         }

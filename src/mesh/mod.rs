@@ -9,12 +9,12 @@
 //! `q as f32 * scale + offset` when the vertex stage reads it, the same
 //! `f32` arithmetic on every target, so an `i16` mesh renders exactly like
 //! the `f32` mesh of its dequantized values. With the `std` feature,
-//! [`QuantizedMesh`] quantizes a mesh at run time as the bake tool does.
+//! `QuantizedMesh` quantizes a mesh at run time as the bake tool does.
 //!
 //! Winding: a triangle `(a, b, c)` faces the side its normal
 //! `(b - a) × (c - a)` points to. Seen from that side in the left-handed
 //! frame it is clockwise on screen. (Babylon's files wind the other way;
-//! the [`babylon`](crate::babylon) loader rewinds them.)
+//! the `babylon` loader rewinds them.)
 
 #[cfg(feature = "std")]
 mod quantize;

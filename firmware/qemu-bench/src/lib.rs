@@ -43,13 +43,9 @@ pub fn file_scene(
 }
 
 /// Instructions per SysTick tick under `-icount shift=0` (1 ns an
-/// instruction): SysTick runs at 25 MHz on mps2-an385 and mps2-an386.
-#[cfg(not(soft3d_an505))]
-pub const INSTRUCTIONS_PER_TICK: u32 = 40;
-/// Instructions per SysTick tick under `-icount shift=0` (1 ns an
-/// instruction): SysTick runs at 20 MHz on mps2-an505.
-#[cfg(soft3d_an505)]
-pub const INSTRUCTIONS_PER_TICK: u32 = 50;
+/// instruction): SysTick runs at 25 MHz on mps2-an385 and mps2-an386, at
+/// 20 MHz on mps2-an505.
+pub const INSTRUCTIONS_PER_TICK: u32 = if cfg!(soft3d_an505) { 50 } else { 40 };
 
 pub struct Timer(pub cortex_m::peripheral::SYST);
 

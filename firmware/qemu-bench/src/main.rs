@@ -3,9 +3,10 @@
 //!
 //! Under `qemu-system-arm -icount shift=0` every instruction advances the
 //! virtual clock by 1 ns; the board's SysTick runs at 25 MHz (mps2-an385,
-//! mps2-an386) or 20 MHz (mps2-an505), so one tick is 40 or 50 instructions. Counts are deterministic: the same binary prints the
-//! same numbers. The factor is calibrated at start-up on a loop of exactly
-//! known length and printed as a `calibration` line.
+//! mps2-an386) or 20 MHz (mps2-an505), so one tick is 40 or 50
+//! instructions. Counts are deterministic: the same binary prints the same
+//! numbers. The factor is calibrated at start-up on a loop of exactly known
+//! length and printed as a `calibration` line.
 //!
 //! Per scene and mode it prints instructions per frame (the checksum sink
 //! timed separately), the frame's checksum, the peak stack the frame used

@@ -471,6 +471,8 @@ fn functions(results: &Results) -> String {
         "The functions soft3d takes from its math backend, each alone: largest error over 100,001 arguments against `f64` \
          (relative for the roots and `tan`, absolute for `sin` and `cos`; host), and instructions per call on the \
          emulated cores (`firmware/qemu-bench/src/bin/mathfns.rs`, the call included, the loop subtracted). \
+         With `libm`, the roots on the M4F are the FPU's `vsqrt.f32`, the same bits as libm's `sqrtf` (the \
+         firmware compares them over 262,144 arguments spanning the `f32` range). \
          `pow` is not among them: highlights use integer powers.\n"
     );
     let _ = writeln!(d, "| function | used for | libm error | micromath error | libm M4F / M0+ instr | micromath M4F / M0+ instr |");
