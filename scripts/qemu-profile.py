@@ -82,7 +82,9 @@ with tempfile.TemporaryDirectory() as d:
         sys.exit(0)
     if annotate:
         lo, hi = min(per_pc), max(per_pc) + 4
-        dis = subprocess.run(["llvm-objdump", "-d", "-l", "--no-show-raw-insn", f"--start-address={lo:#x}",
+        # The M33's FPv5 instructions (vminnm, vsel, ...) decode only when named.
+        mattr = ["--mattr=+fp-armv8d16sp,+dsp"] if machine == "mps2-an505" else []
+        dis = subprocess.run(["llvm-objdump", "-d", "-l", "--no-show-raw-insn", *mattr, f"--start-address={lo:#x}",
                               f"--stop-address={hi:#x}", elf], capture_output=True, text=True).stdout
         for line in dis.splitlines():
             m = re.match(r"^\s*([0-9a-f]+):", line)
