@@ -14,10 +14,11 @@ compile_error!("soft3d needs a math backend: enable the `libm` (default) or `mic
 /// Square root. Negative inputs give NaN (callers clamp first).
 ///
 /// Out of line where it is the FPU's instruction: its callers run per draw
-/// call or per vertex, and inlined there it cost `draw_mesh` more (its
-/// registers) than the call it saved: `torus.babylon` `f32` M4F +0.3%.
-#[cfg_attr(all(feature = "libm", target_arch = "arm", target_abi = "eabihf"), inline(never))]
-#[cfg_attr(not(all(feature = "libm", target_arch = "arm", target_abi = "eabihf")), inline)]
+/// call or per vertex, and inlined there `draw_mesh` took more instructions
+/// than the call saved (`torus.babylon` `f32` M4F +0.3%; its blocks came
+/// out reshuffled, not traced further).
+#[cfg_attr(soft3d_fpu_sqrt, inline(never))]
+#[cfg_attr(not(soft3d_fpu_sqrt), inline)]
 pub fn sqrt(x: f32) -> f32 {
     root(x)
 }
@@ -26,13 +27,11 @@ pub fn sqrt(x: f32) -> f32 {
 /// `micromath`, its one-step bit trick (a few percent off, no division).
 #[inline]
 pub fn rsqrt(x: f32) -> f32 {
-    #[cfg(feature = "libm")]
-    {
+    // With libm, through `sqrt`: out of line where that is the FPU's root.
+    if cfg!(feature = "libm") {
         1.0 / sqrt(x)
-    }
-    #[cfg(all(not(feature = "libm"), feature = "micromath"))]
-    {
-        micromath::F32Ext::invsqrt(x)
+    } else {
+        rsqrt_inline(x)
     }
 }
 
@@ -53,11 +52,11 @@ pub(crate) fn rsqrt_inline(x: f32) -> f32 {
 /// The backend's square root.
 #[inline(always)]
 fn root(x: f32) -> f32 {
-    #[cfg(all(feature = "libm", target_arch = "arm", target_abi = "eabihf"))]
+    #[cfg(soft3d_fpu_sqrt)]
     {
         fpu_sqrt(x)
     }
-    #[cfg(all(feature = "libm", not(all(target_arch = "arm", target_abi = "eabihf"))))]
+    #[cfg(all(feature = "libm", not(soft3d_fpu_sqrt)))]
     {
         libm::sqrtf(x)
     }
@@ -75,7 +74,7 @@ fn root(x: f32) -> f32 {
 /// single-precision register class needs the `vfp2` target feature, which
 /// Rust ties to double precision, so `asm!` cannot allocate an `s` register
 /// on a Cortex-M4F or M33.
-#[cfg(all(feature = "libm", target_arch = "arm", target_abi = "eabihf"))]
+#[cfg(soft3d_fpu_sqrt)]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn fpu_sqrt(x: f32) -> f32 {
