@@ -124,8 +124,9 @@ pub trait Effect: Copy {
     /// Whether [`Effect::vertex`] uses the lights (and so the world-space
     /// position and normal), so unlit effects skip that work.
     const LIT_VERTICES: bool;
-    /// Whether [`Effect::face`] is used, so other effects skip the face normal.
-    const USES_FACE: bool;
+    /// Whether [`Effect::face`] is used, so other effects skip the face
+    /// normal (default: not used).
+    const USES_FACE: bool = false;
     /// Whether [`Effect::vertex`] reads [`VertexInput::lit`], which the
     /// vertex stage then computes (false: it is left zero).
     const LIT_COLOR: bool = false;
@@ -178,8 +179,12 @@ pub trait Effect: Copy {
 
     /// Varyings of one vertex, for display color type `C`.
     fn vertex<C: Color>(&self, v: &VertexInput, lights: &Lighting) -> [f32; MAX_VARYINGS];
-    /// The per-triangle color.
-    fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888;
+    /// The per-triangle color, called only where [`Effect::USES_FACE`] is
+    /// set (default: black).
+    fn face(&self, f: &FaceInput, lights: &Lighting) -> Rgb888 {
+        let _ = (f, lights);
+        Rgb888::BLACK
+    }
     /// The color of a pixel from the triangle's color (converted once per
     /// triangle), the interpolated varyings and the color already there
     /// (for effects that blend; the others ignore it and the load is
@@ -325,7 +330,6 @@ impl Effect for Gouraud {
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 3;
     const LIT_VERTICES: bool = true;
-    const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
     const NAME: &'static str = "gouraud";
     fn lit_scale<C: Color>() -> [f32; 3] {
@@ -336,9 +340,6 @@ impl Effect for Gouraud {
         let mut out = [0.0; MAX_VARYINGS];
         out[..3].copy_from_slice(&v.lit);
         out
-    }
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
@@ -379,7 +380,6 @@ impl Effect for MonoGouraud {
     }
     const VARYINGS: usize = 1;
     const LIT_VERTICES: bool = true;
-    const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
     const LIT_WHITE: bool = true;
     const LIT_CHANNELS: [bool; 3] = [false, true, false];
@@ -394,9 +394,6 @@ impl Effect for MonoGouraud {
         let mut out = [0.0; MAX_VARYINGS];
         out[0] = v.lit[1];
         out
-    }
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, color: &Rgb888, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
@@ -423,14 +420,10 @@ impl Effect for VertexColor {
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 3;
     const LIT_VERTICES: bool = false;
-    const USES_FACE: bool = false;
     const NAME: &'static str = "unlit";
     #[inline(always)]
     fn vertex<C: Color>(&self, v: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         rgb_varyings::<C>([v.color.r() as f32, v.color.g() as f32, v.color.b() as f32])
-    }
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
@@ -451,14 +444,10 @@ impl Effect for FragmentCount {
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 0;
     const LIT_VERTICES: bool = false;
-    const USES_FACE: bool = false;
     const NAME: &'static str = "count";
     #[inline(always)]
     fn vertex<C: Color>(&self, _: &VertexInput, _: &Lighting) -> [f32; MAX_VARYINGS] {
         [0.0; MAX_VARYINGS]
-    }
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
     #[inline(always)]
     fn shade<C: Color, S: Interp>(&self, _: &Self::Uniforms<S>, _: C, _: &[S; MAX_VARYINGS], dst: C) -> C {
@@ -606,7 +595,6 @@ impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, 
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 2 + L::CHANNELS.len();
     const LIT_VERTICES: bool = true;
-    const USES_FACE: bool = false;
     const LIT_COLOR: bool = true;
     const LIT_CHANNELS: [bool; 3] = channel_set(L::CHANNELS);
     const NAME: &'static str = if L::CHANNELS.len() == 1 { "textured-gray" } else { "textured" };
@@ -641,10 +629,6 @@ impl<F: Filter, W: Wrap, B: Blend, L: LightModel> Effect for Textured<'_, F, W, 
             *o = v.lit[c];
         }
         out
-    }
-
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
 
     #[inline(always)]
@@ -757,7 +741,6 @@ fn powi_s<S: Interp>(mut x: S, mut n: u32) -> S {
 impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
     const VARYINGS: usize = 6;
     const LIT_VERTICES: bool = true;
-    const USES_FACE: bool = false;
     const NAME: &'static str = if SPECULAR { "blinn-phong" } else { "phong" };
     type Uniforms<S: Interp> = PhongUniforms<S>;
 
@@ -786,10 +769,6 @@ impl<const SPECULAR: bool> Effect for Phong<SPECULAR> {
         let mut out = [0.0; MAX_VARYINGS];
         out[..6].copy_from_slice(&[n.x, n.y, n.z, v.position.x, v.position.y, v.position.z]);
         out
-    }
-
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
 
     #[inline(always)]

@@ -5,7 +5,7 @@
 
 use crate::scenes::{Scene, HEIGHT, WIDTH};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888, RgbColor};
-use soft3d::effect::{Color, Effect, FaceInput, Gouraud, Phong, Textured, VertexColor, VertexInput, MAX_VARYINGS};
+use soft3d::effect::{Color, Effect, Gouraud, Phong, Textured, VertexColor, VertexInput, MAX_VARYINGS};
 use soft3d::host::Image;
 use soft3d::material::Perspective;
 use soft3d::math::Interp;
@@ -194,7 +194,6 @@ impl<const AXIS: usize> Effect for UvProbe<AXIS> {
     fn uniforms<S: Interp>(&self, _: &Lighting, _: Rgb888) {}
     const VARYINGS: usize = 2;
     const LIT_VERTICES: bool = false;
-    const USES_FACE: bool = false;
     const NAME: &'static str = "uv-probe";
 
     fn ranges<C: Color>() -> [(f32, f32); MAX_VARYINGS] {
@@ -215,10 +214,6 @@ impl<const AXIS: usize> Effect for UvProbe<AXIS> {
         let mut out = [0.0; MAX_VARYINGS];
         out[..2].copy_from_slice(&[v.uv.x * self.width, v.uv.y * self.height]);
         out
-    }
-
-    fn face(&self, _: &FaceInput, _: &Lighting) -> Rgb888 {
-        Rgb888::BLACK
     }
 
     fn shade<C: Color, S: Interp>(&self, _: &(), _: C, v: &[S; MAX_VARYINGS], _: C) -> C {
