@@ -356,33 +356,33 @@ struct Plane<S> {
     dy: S,
     lo: S,
     hi: S,
-    /// The plane `(at_a, dx, dy)` in `f32` where stepping in `S` cannot be
-    /// trusted: a gradient that does not fit 16.16 (a sliver's depth), or a
-    /// triangle reaching far toward the guard band, whose gradients'
-    /// rounding, times millions of pixels from its top vertex, would be
-    /// far off on screen. Then only the careful path is used, and it
-    /// evaluates span ends from this in `f64` (the gradients, rounded to
-    /// `f32` from their `f64` values, are then off by less than 0.4 of a
-    /// level at 2^27 pixels).
-    wide: Option<(f32, f32, f32)>,
 }
+
+/// A plane `(value at the top vertex, dx, dy)` in `f32` for where stepping
+/// in `S` cannot be trusted: a gradient that does not fit 16.16 (a
+/// sliver's depth), or a triangle reaching far toward the guard band,
+/// whose gradients' rounding, times millions of pixels from its top
+/// vertex, would be far off on screen. Only the careful path uses it: it
+/// evaluates span ends from it in `f64` (the gradients, rounded to `f32`
+/// from their `f64` values, are then off by less than 0.4 of a level at
+/// 2^27 pixels).
+type WidePlane = (f32, f32, f32);
 
 impl<S: Interp> Plane<S> {
     /// The plane through the values `a`, `b`, `c` at the vertices of a
     /// triangle of shape `shape` (see [`Shape`]). A plane too steep to
-    /// step (see [`Interp::is_wide`]) is set up by [`Plane::far`] from the
-    /// values `exact` gives instead. `clear` is cleared unless the vertex
-    /// values alone show the stepped plane in range (see
+    /// step (see [`Interp::is_wide`]) sets `steep`: the careful path then
+    /// sets it up again by [`Plane::far`]. `clear` is cleared unless the
+    /// vertex values alone show the stepped plane in range (see
     /// [`Interp::clear_of_bounds`]).
     #[inline(always)]
-    fn new(shape: &Shape<S>, (a, b, c): (S, S, S), (lo, hi): (S, S), exact: impl FnOnce() -> (f32, f32, f32), clear: &mut bool) -> Self {
+    fn new(shape: &Shape<S>, (a, b, c): (S, S, S), (lo, hi): (S, S), clear: &mut bool, steep: &mut bool) -> Self {
         let (gx, gy) = S::gradients(&shape.basis, a, b, c);
         // Fixed point saturates gradients beyond ±32768 (a sliver's
         // depth): checked on the integers, two compares that cost no float
         // operation (in software on an M0+).
         if gx.is_wide() | gy.is_wide() {
-            *clear = false;
-            return Self::far(shape, exact(), (lo, hi));
+            (*clear, *steep) = (false, true);
         }
         // Only where the exact check's 64-bit products are library calls
         // (ARMv6-M): with a long multiply the check measured cheaper than
@@ -390,14 +390,20 @@ impl<S: Interp> Plane<S> {
         // against 1.29 M; on the M0+ 7.64 M against 7.30 M).
         // (Not tested again once a plane has failed it.)
         *clear = *clear && cfg!(soft3d_armv6m) && S::clear_of_bounds(&shape.basis, a, b, c, lo, hi);
-        Self { at_a: a, dx: gx, dy: gy, lo, hi, wide: None }
+        Self { at_a: a, dx: gx, dy: gy, lo, hi }
     }
 
     /// [`Plane::new`] from values in `f32`.
     #[inline(always)]
-    fn from_f32(shape: &Shape<S>, (va, vb, vc): (f32, f32, f32), range: (S, S), clear: &mut bool) -> Self {
+    fn from_f32(shape: &Shape<S>, (va, vb, vc): (f32, f32, f32), range: (S, S), clear: &mut bool, steep: &mut bool) -> Self {
         let convert = S::from_f32_truncated;
-        Self::new(shape, (convert(va), convert(vb), convert(vc)), range, || (va, vb, vc), clear)
+        Self::new(shape, (convert(va), convert(vb), convert(vc)), range, clear, steep)
+    }
+
+    /// Whether the plane's gradients are too steep to step (see
+    /// [`Interp::is_wide`]).
+    fn is_steep(&self) -> bool {
+        self.dx.is_wide() | self.dy.is_wide()
     }
 
     /// [`Plane::new`] for a triangle reaching toward the guard band, in
@@ -406,7 +412,7 @@ impl<S: Interp> Plane<S> {
     /// of `f64` does not matter.
     #[cold]
     #[inline(never)]
-    fn far(shape: &Shape<S>, (va, vb, vc): (f32, f32, f32), (lo, hi): (S, S)) -> Self {
+    fn far(shape: &Shape<S>, (va, vb, vc): (f32, f32, f32), (lo, hi): (S, S)) -> (Self, WidePlane) {
         let (d1, d2) = (vb - va, vc - va);
         let (x1, y1, x2, y2) = (shape.ox1 as f64, shape.oy1 as f64, shape.ox2 as f64, shape.oy2 as f64);
         let area = x1 * y2 - y1 * x2;
@@ -415,14 +421,8 @@ impl<S: Interp> Plane<S> {
         let per_pixel = shape.per_pixel as f64;
         let dx = (d1 * y2 - d2 * y1) / area * per_pixel;
         let dy = (d2 * x1 - d1 * x2) / area * per_pixel;
-        Self {
-            at_a: S::from_f32(va),
-            dx: S::from_f32(dx as f32),
-            dy: S::from_f32(dy as f32),
-            lo,
-            hi,
-            wide: Some((va, dx as f32, dy as f32)),
-        }
+        let plane = Self { at_a: S::from_f32(va), dx: S::from_f32(dx as f32), dy: S::from_f32(dy as f32), lo, hi };
+        (plane, (va, dx as f32, dy as f32))
     }
 
     /// Value at an offset from the top vertex, in units of `2^-f` pixels.
@@ -436,17 +436,16 @@ impl<S: Interp> Plane<S> {
     /// three vertices are.
     #[inline(always)]
     fn safe(&self, shape: &Shape<S>, f: u32) -> bool {
-        // `&`, not `&&`: straight-line code, no branch per test.
-        self.wide.is_none()
-            & S::plane_within(self.at_a, self.dx, self.dy, (shape.ox1, shape.oy1), (shape.ox2, shape.oy2), f, self.lo, self.hi)
+        S::plane_within(self.at_a, self.dx, self.dy, (shape.ox1, shape.oy1), (shape.ox2, shape.oy2), f, self.lo, self.hi)
     }
 
     /// Start value and step of a span of `len` pixels whose first pixel
     /// center is at offset `(ox, oy)`: both ends clamped into range, the
-    /// values in between interpolated (the careful path).
+    /// values in between interpolated (the careful path), from `wide` in
+    /// `f64` where it is set up.
     #[inline(always)]
-    fn clamped_span(&self, ox: i32, oy: i32, len: i32, f: u32) -> (S, S) {
-        let at = |ox: i32| match self.wide {
+    fn clamped_span(&self, wide: Option<WidePlane>, ox: i32, oy: i32, len: i32, f: u32) -> (S, S) {
+        let at = |ox: i32| match wide {
             Some((v, dx, dy)) => {
                 let unit = 1.0 / (1u32 << f) as f64;
                 S::from_f32((v as f64 + dx as f64 * (ox as f64 * unit) + dy as f64 * (oy as f64 * unit)) as f32)
@@ -613,14 +612,14 @@ pub fn rasterize<C, S, E, P, D, Z, const V: usize>(
     let planes = Planes::<S, V>::new::<C, E, P>(&shape, &t, effect, false);
     // With a wrapping scalar, a plane whose rounded gradients leave its
     // range at a vertex takes the careful path (clamped span ends), and so
-    // does a triangle whose unclamped perspective division could stray
-    // (see `Interp::RELATIVE_DIVISION`); a triangle reaching far toward
-    // the guard band is evaluated in f64 per span whatever the scalar (see
-    // `Plane::far`).
-    let careful = shape.far || planes.steep_q || (S::WRAPS && !planes.safe::<E, P, D>(&shape, f));
+    // does a plane too steep to step, and a triangle whose unclamped
+    // perspective division could stray (see `Interp::RELATIVE_DIVISION`); a
+    // triangle reaching far toward the guard band is evaluated in f64 per
+    // span whatever the scalar (see `Plane::far`).
+    let careful = shape.far || planes.steep || (S::WRAPS && !planes.safe::<E, P, D>(&shape, f));
     if careful {
-        // The planes are set up again there: passing them would keep every
-        // plane's `f32` copy alive here, on the hot path, for the rare case.
+        // The planes are set up again there, with their `f32` copies where
+        // they need them: not kept here, on the hot path, for the rare case.
         return rasterize_careful::<C, S, E, P, D, Z, V>(target, effect, uniforms, &t, face, f);
     }
     let n = E::VARYINGS.min(V);
@@ -687,16 +686,25 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
     let n = E::VARYINGS.min(V);
     let shape = &Shape::<S>::new(t, f);
     let Planes { mut z, mut q, mut vary, bounds, .. } = Planes::<S, V>::new::<C, E, P>(shape, t, effect, true);
-    if shape.far {
-        // A triangle reaching toward the guard band gets its planes again
-        // in f64 (see `Plane::far`).
+    // Planes too steep to step, and every plane of a triangle reaching
+    // toward the guard band, are set up again in f64 (see `Plane::far`).
+    let far = |p: &Plane<S>| shape.far || p.is_steep();
+    let (mut wide_z, mut wide_q, mut wide) = (None, None, [None; V]);
+    if far(&z) || (P::CORRECT && far(&q)) || vary[..n].iter().any(far) {
         let values = VertexValues::<V>::new::<C, E, P, S>(t, effect, true);
-        z = Plane::far(shape, t.depths::<S>(), range_in(values.z_range));
-        if P::CORRECT {
-            q = Plane::far(shape, values.q, range_in(values.q_range));
+        if far(&z) {
+            (z, wide_z) = wide_plane(shape, t.depths::<S>(), (z.lo, z.hi));
+        }
+        if P::CORRECT && far(&q) {
+            (q, wide_q) = wide_plane(shape, values.q, (q.lo, q.hi));
         }
         for (i, p) in vary.iter_mut().enumerate().take(n) {
-            *p = Plane::far(shape, values.vary[i], range_in(values.ranges[i]));
+            if far(p) {
+                // (A steep plane keeps its range; those of a far triangle
+                // are the varyings' own.)
+                let range = if shape.far { range_in(values.ranges[i]) } else { (p.lo, p.hi) };
+                (*p, wide[i]) = wide_plane(shape, values.vary[i], range);
+            }
         }
     }
     let a = t.a;
@@ -705,15 +713,21 @@ fn rasterize_careful<C, S, E, P, D, Z, const V: usize>(
         let (color, depths) = target.span(y, x0, x1);
         let (px, py) = ((x0 << f) + (1 << (f - 1)) - a.x, (y << f) + (1 << (f - 1)) - a.y);
         let len = x1 - x0;
-        let (zs, zd) = z.clamped_span(px, py, len, f);
-        let (qs, qd) = q.clamped_span(px, py, len, f);
+        let (zs, zd) = z.clamped_span(wide_z, px, py, len, f);
+        let (qs, qd) = q.clamped_span(wide_q, px, py, len, f);
         let mut vals = [S::default(); MAX_VARYINGS];
         let mut steps = [S::default(); MAX_VARYINGS];
         for i in 0..n {
-            (vals[i], steps[i]) = vary[i].clamped_span(px, py, len, f);
+            (vals[i], steps[i]) = vary[i].clamped_span(wide[i], px, py, len, f);
         }
         span::<C, S, E, P, D, Z, true>(color, depths, effect, uniforms, zs, zd, vals, &steps, qs, qd, face, &bounds);
     }
+}
+
+/// [`Plane::far`], with its `f32` plane as the careful path keeps it.
+fn wide_plane<S: Interp>(shape: &Shape<S>, values: (f32, f32, f32), range: (S, S)) -> (Plane<S>, Option<WidePlane>) {
+    let (plane, wide) = Plane::far(shape, values, range);
+    (plane, Some(wide))
 }
 
 /// A sorted triangle's rows within a strip, yielding each non-empty span of
@@ -979,9 +993,11 @@ struct Planes<S, const V: usize> {
     /// Per varying, the bounds of its perspective division (see
     /// [`VertexValues::bounds`]).
     bounds: [(S, S); MAX_VARYINGS],
-    /// Whether `q` varies over the triangle by more than [`MAX_Q_RATIO`]
-    /// to one (only tested where [`Interp::RELATIVE_DIVISION`] holds).
-    steep_q: bool,
+    /// Whether a plane's gradients are too steep to step (see
+    /// [`Interp::is_wide`]), or `q` varies over the triangle by more than
+    /// [`MAX_Q_RATIO`] to one (only tested where
+    /// [`Interp::RELATIVE_DIVISION`] holds): then the careful path draws it.
+    steep: bool,
     /// Whether the vertex values alone show every plane in range (see
     /// [`Interp::clear_of_bounds`]); if not, [`Planes::safe`] decides.
     clear: bool,
@@ -995,17 +1011,17 @@ impl<S: Interp, const V: usize> Planes<S, V> {
         // least.
         let least_q = S::Q_SCALE / MAX_Q_RATIO;
         let (qa, qb, qc) = values.q;
-        let steep_q = P::CORRECT && S::RELATIVE_DIVISION && (less(qa, least_q) || less(qb, least_q) || less(qc, least_q));
+        let mut steep = P::CORRECT && S::RELATIVE_DIVISION && (less(qa, least_q) || less(qb, least_q) || less(qc, least_q));
         // Depth from window z in the scalar itself (integers only in fixed
         // point), not through f32.
         let (a, b, c) = (S::depth(t.a.z), S::depth(t.b.z), S::depth(t.c.z));
         let mut clear = true;
-        let z = Plane::new(shape, (a, b, c), range_in(values.z_range), || t.depths::<S>(), &mut clear);
+        let z = Plane::new(shape, (a, b, c), range_in(values.z_range), &mut clear, &mut steep);
         let q = if P::CORRECT {
-            Plane::from_f32(shape, values.q, range_in(values.q_range), &mut clear)
+            Plane::from_f32(shape, values.q, range_in(values.q_range), &mut clear, &mut steep)
         } else {
             let (one, zero) = (S::from_f32(1.0), S::default());
-            Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one, wide: None }
+            Plane { at_a: one, dx: zero, dy: zero, lo: one, hi: one }
         };
         let mut vary = [q; V];
         let mut bounds = [(S::default(), S::default()); MAX_VARYINGS];
@@ -1021,14 +1037,14 @@ impl<S: Interp, const V: usize> Planes<S, V> {
             } else {
                 range_at(&values.ranges, i)
             };
-            vary[i] = Plane::from_f32(shape, values.vary[i], range, &mut clear);
+            vary[i] = Plane::from_f32(shape, values.vary[i], range, &mut clear, &mut steep);
             if P::CORRECT {
                 // (A relative division without a clamp uses `lo` alone.)
                 let hi = if clamp || !S::RELATIVE_DIVISION { S::from_f32(values.bounds[i].1) } else { S::default() };
                 bounds[i] = (S::from_f32(values.bounds[i].0), hi);
             }
         }
-        Self { z, q, vary, bounds, steep_q, clear }
+        Self { z, q, vary, bounds, steep, clear }
     }
 
     /// Whether every plane the material uses stays within its range at
